@@ -1,0 +1,86 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "asr_ism/ism.hpp"
+
+namespace asr_ism {
+
+struct IsmRecognitionParameters {
+  /// Edge of the accumulator's cubic bins in metres, and the position deviation at which a
+  /// vote's position compliance reaches 0.
+  double bin_size = 0.1;
+  /// Orientation deviation in radians at which a vote's orientation compliance reaches 0.
+  double max_angle_deviation = 0.5235987755982988;  // 30 degrees
+};
+
+/// An estimate given to one ISM: a real object or a child ISM's result, already assigned to the
+/// member it stands for.
+struct IsmInput {
+  int member = -1;
+  Pose pose;
+  /// 1 for a real object; the objective of the child ISM's result for a placeholder, so that a
+  /// placeholder counts as many objects as its sub-tree matched.
+  double weight = 1.0;
+  /// The real object estimates this input stands for: the estimate itself for a real object,
+  /// every estimate the child result matched for a placeholder. A result whose estimates are a
+  /// subset of a better result's is redundant. Empty: the input stands for itself alone.
+  std::vector<int> estimates;
+};
+
+/// How one member of an ISM takes part in a recognition result.
+struct MemberMatch {
+  int input = -1;          // index into the inputs, -1 if the member is not matched
+  int relative_pose = -1;  // the member's relative pose whose vote matched
+  double position_compliance = 0.0;
+  double orientation_compliance = 0.0;
+
+  bool matched() const { return input >= 0; }
+  double similarity() const { return position_compliance * orientation_compliance; }
+};
+
+/// One recognition result of an ISM: a reference pose (where consistent votes met) and the most
+/// consistent combination of votes there, one per member.
+struct IsmResult {
+  Pose reference_pose;
+  /// Sum over matched members of similarity x input weight.
+  double objective = 0.0;
+  std::vector<MemberMatch> matches;  // indexed by member
+  /// Union of the `estimates` of the matched inputs, sorted.
+  std::vector<int> estimates;
+};
+
+/// Which results of an ISM the caller needs; the search skips bins and hypotheses that cannot
+/// change them, so the answer is the same as with an exhaustive search, only faster.
+struct IsmResultSelection {
+  /// 0 (for a root ISM): every result whose estimates are not a subset of the estimates of a
+  /// result with a higher objective. n > 0 (for a sub-ISM whose results go up the tree): the n
+  /// best results, counting results that match the same inputs to the same members once.
+  std::size_t best_count = 0;
+};
+
+/// Work counts of a recognition, comparable across machines.
+struct IsmRecognitionStats {
+  std::size_t votes = 0;
+  std::size_t bins = 0;
+  std::size_t candidates = 0;   // reference hypotheses evaluated
+  std::size_t comparisons = 0;  // vote-to-hypothesis comparisons
+};
+
+/// Recognises the scene an ISM models in its inputs. Every input casts one vote per relative pose
+/// of its member (a hypothesis of the reference pose); votes are binned by position. In each bin,
+/// every vote is tried as the reference pose, and each member contributes its best vote within
+/// `bin_size` and `max_angle_deviation` of it (so only the 27 surrounding bins matter):
+/// similarity = position compliance x orientation compliance. The hypothesis with the highest
+/// objective is the bin's result. Of results that match the same inputs to the same members only
+/// the best is kept; `selection` says which of the rest are returned. Results come sorted by
+/// objective (best first, ties in bin order). Bins are searched in order of their objective's
+/// upper bound, and bins and hypotheses whose bound shows they cannot be selected are skipped.
+/// Deterministic.
+std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
+                                    const IsmRecognitionParameters& parameters,
+                                    const IsmResultSelection& selection = {},
+                                    IsmRecognitionStats* stats = nullptr);
+
+}  // namespace asr_ism

@@ -1,0 +1,125 @@
+#include "asr_ism/voting_space.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "asr_ism/input_error.hpp"
+
+namespace asr_ism {
+namespace {
+
+constexpr int kCellBits = 21;
+constexpr std::int64_t kCellOffset = std::int64_t{1} << (kCellBits - 1);
+constexpr std::uint64_t kCellMask = (std::uint64_t{1} << kCellBits) - 1;
+
+std::uint64_t packCell(std::int64_t cx, std::int64_t cy, std::int64_t cz) {
+  return (static_cast<std::uint64_t>(cx + kCellOffset) << (2 * kCellBits)) |
+         (static_cast<std::uint64_t>(cy + kCellOffset) << kCellBits) |
+         static_cast<std::uint64_t>(cz + kCellOffset);
+}
+
+std::int64_t unpackCell(std::uint64_t key, int shift) {
+  return static_cast<std::int64_t>((key >> shift) & kCellMask) - kCellOffset;
+}
+
+std::uint64_t hashKey(std::uint64_t key) {
+  // splitmix64 finaliser: spreads neighbouring cells over the table.
+  key ^= key >> 30;
+  key *= 0xbf58476d1ce4e5b9ULL;
+  key ^= key >> 27;
+  key *= 0x94d049bb133111ebULL;
+  key ^= key >> 31;
+  return key;
+}
+
+}  // namespace
+
+std::int64_t VotingSpace::cellOf(double coordinate, double bin_size) {
+  return static_cast<std::int64_t>(std::floor(coordinate / bin_size));
+}
+
+VotingSpace::VotingSpace(double bin_size, const double* x, const double* y, const double* z,
+                         std::size_t n) {
+  struct Entry {
+    std::uint64_t key;
+    double x;
+    std::uint32_t index;
+  };
+  std::vector<Entry> entries(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double coordinates[3] = {x[i], y[i], z[i]};
+    std::int64_t cells[3];
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!std::isfinite(coordinates[axis])) {
+        throw InputError("voting space: a vote position is not finite");
+      }
+      cells[axis] = cellOf(coordinates[axis], bin_size);
+      if (cells[axis] <= -kCellOffset || cells[axis] >= kCellOffset - 1) {
+        std::ostringstream message;
+        message << "voting space: a vote at coordinate " << coordinates[axis]
+                << " m lies too far from the origin for bins of " << bin_size << " m";
+        throw InputError(message.str());
+      }
+    }
+    entries[i] = {packCell(cells[0], cells[1], cells[2]), x[i], static_cast<std::uint32_t>(i)};
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    if (a.key != b.key)
+      return a.key < b.key;
+    if (a.x != b.x)
+      return a.x < b.x;
+    return a.index < b.index;
+  });
+  order_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    order_[i] = entries[i].index;
+    if (i == 0 || entries[i].key != entries[i - 1].key) {
+      bins_.push_back({entries[i].key, static_cast<std::uint32_t>(i), 0});
+    }
+    bins_.back().end = static_cast<std::uint32_t>(i + 1);
+  }
+  std::size_t table_size = 16;
+  while (table_size < 2 * bins_.size()) {
+    table_size *= 2;
+  }
+  table_.assign(table_size, -1);
+  table_mask_ = table_size - 1;
+  for (std::size_t b = 0; b < bins_.size(); ++b) {
+    std::uint64_t slot = hashKey(bins_[b].key) & table_mask_;
+    while (table_[slot] >= 0) {
+      slot = (slot + 1) & table_mask_;
+    }
+    table_[slot] = static_cast<std::int32_t>(b);
+  }
+}
+
+int VotingSpace::findBin(std::uint64_t key) const {
+  for (std::uint64_t slot = hashKey(key) & table_mask_;; slot = (slot + 1) & table_mask_) {
+    const std::int32_t bin = table_[slot];
+    if (bin < 0 || bins_[bin].key == key) {
+      return bin;
+    }
+  }
+}
+
+int VotingSpace::neighbourBins(std::size_t bin, std::array<int, 27>& neighbours) const {
+  const std::uint64_t key = bins_[bin].key;
+  const std::int64_t cx = unpackCell(key, 2 * kCellBits);
+  const std::int64_t cy = unpackCell(key, kCellBits);
+  const std::int64_t cz = unpackCell(key, 0);
+  int count = 0;
+  for (std::int64_t dx = -1; dx <= 1; ++dx) {
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+      for (std::int64_t dz = -1; dz <= 1; ++dz) {
+        const int found = findBin(packCell(cx + dx, cy + dy, cz + dz));
+        if (found >= 0) {
+          neighbours[count++] = found;
+        }
+      }
+    }
+  }
+  return count;
+}
+
+}  // namespace asr_ism

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "asr_ism/object.hpp"
+
+namespace asr_ism_tree {
+
+using asr_ism::ObjectKey;
+using asr_ism::Pose;
+
+/// How a scene object present in the input fits an instance. An object that appears in several
+/// ISMs of the tree (as in a complete topology) is rated once per appearance; `similarity` is the
+/// mean over its appearances of its contribution to the root's objective (0 where it was not
+/// matched), the compliances are the means over the appearances where it was matched.
+struct InstanceObject {
+  ObjectKey key;
+  Pose pose;                // of the input estimate
+  int estimate = -1;        // index in the recognised configuration
+  double similarity = 0.0;  // in [0, 1]; 0: present but inconsistent with this instance
+  double position_compliance = 0.0;
+  double orientation_compliance = 0.0;
+  int appearances = 0;  // leaves of the tree that stand for this object
+};
+
+/// One ISM's share of an instance.
+struct InstanceIsm {
+  std::string name;
+  double objective = 0.0;  // 0 if the ISM has no result in this instance
+  Pose reference_pose;     // meaningful only if `recognized`
+  bool recognized = false;
+};
+
+/// An instance of a scene category found in a configuration.
+struct SceneInstance {
+  std::string scene;
+  /// Root objective / number of leaves of the tree, in [0, 1].
+  double confidence = 0.0;
+  /// The root ISM's reference pose.
+  Pose pose;
+  /// Scene objects present in the input, in the order of the tree's objects.
+  std::vector<InstanceObject> objects;
+  /// Scene objects without any estimate in the input.
+  std::vector<ObjectKey> missing;
+  /// Every ISM of the tree, in tree order (root first).
+  std::vector<InstanceIsm> isms;
+};
+
+}  // namespace asr_ism_tree

@@ -1,0 +1,100 @@
+#include "asr_ism_tree/tree_generation.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "asr_ism/input_error.hpp"
+#include "asr_ism/ism_learning.hpp"
+#include "asr_ism_tree/star_partition.hpp"
+
+namespace asr_ism_tree {
+
+using asr_ism::InputError;
+
+namespace {
+
+void requireSameObjects(const asr_ism::Demonstration& demonstration,
+                        const RelationTopology& topology) {
+  const std::string what = "scene '" + demonstration.scene() + "'";
+  for (const ObjectKey& key : topology.objects()) {
+    if (demonstration.indexOf(key) < 0) {
+      throw InputError(what + ": the relation topology names " + key.toString() +
+                       ", which the demonstration does not contain");
+    }
+  }
+  for (const ObjectKey& key : demonstration.objects()) {
+    if (topology.indexOf(key) < 0) {
+      throw InputError(what + ": the relation topology leaves out demonstrated object " +
+                       key.toString());
+    }
+  }
+}
+
+}  // namespace
+
+IsmTree generateIsmTree(const asr_ism::Demonstration& demonstration,
+                        const RelationTopology& topology,
+                        const asr_ism::IsmRecognitionParameters& parameters, int root_center) {
+  demonstration.validate("demonstration");
+  requireSameObjects(demonstration, topology);
+  if (!(parameters.bin_size > 0.0) || !(parameters.max_angle_deviation > 0.0)) {
+    throw InputError("scene '" + demonstration.scene() +
+                     "': bin size and maximum angle deviation must be > 0");
+  }
+  topology.requireConnected("scene '" + demonstration.scene() + "'");
+  const std::vector<Star> stars = partitionIntoStars(topology, root_center);
+
+  // Conversion order: deepest stars first, later extracted first within a height; the root last.
+  std::vector<int> order(stars.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    if (stars[a].height != stars[b].height)
+      return stars[a].height > stars[b].height;
+    return a > b;
+  });
+  // The ISM index of each star: root 0, sub-ISM k at k + 1, k counting down in conversion order.
+  std::vector<int> ism_of_star(stars.size());
+  for (std::size_t position = 0; position < order.size(); ++position) {
+    ism_of_star[order[position]] = static_cast<int>(order.size() - 1 - position);
+  }
+
+  IsmTree tree;
+  tree.scene = demonstration.scene();
+  tree.topology = topology;
+  tree.parameters = parameters;
+  tree.isms.resize(stars.size());
+  tree.parent.assign(stars.size(), -1);
+  tree.level.assign(stars.size(), 0);
+
+  const auto trajectory_of = [&](int object) {
+    return demonstration.trajectory(demonstration.indexOf(topology.objects()[object]));
+  };
+  for (std::size_t s = 0; s < stars.size(); ++s) {
+    const Star& star = stars[s];
+    const int ism = ism_of_star[s];
+    const std::string name = ism == 0 ? tree.scene : tree.scene + "_sub" + std::to_string(ism - 1);
+    const ObjectKey& center_key = topology.objects()[star.center];
+    std::vector<asr_ism::MemberTrajectory> members;
+    members.push_back({center_key, -1, trajectory_of(star.center)});
+    for (int neighbour : star.neighbours) {
+      int child_ism = -1;
+      for (std::size_t child = 0; child < stars.size(); ++child) {
+        if (stars[child].parent == static_cast<int>(s) && stars[child].center == neighbour) {
+          child_ism = ism_of_star[child];
+        }
+      }
+      const ObjectKey key =
+          child_ism < 0 ? topology.objects()[neighbour]
+                        : ObjectKey{tree.scene + "_sub" + std::to_string(child_ism - 1), ""};
+      // A placeholder moves with the child ISM's reference: the child star's centre.
+      members.push_back({key, child_ism, trajectory_of(neighbour)});
+    }
+    tree.isms[ism] = asr_ism::learnIsm(name, center_key, trajectory_of(star.center), members);
+    tree.parent[ism] = star.parent < 0 ? -1 : ism_of_star[star.parent];
+    tree.level[ism] = star.height;
+  }
+  tree.validate("generated tree");
+  return tree;
+}
+
+}  // namespace asr_ism_tree

@@ -1,0 +1,228 @@
+#include "asr_ism_tree/tree_recognizer.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+
+#include "asr_ism/input_error.hpp"
+
+namespace asr_ism_tree {
+
+using asr_ism::IsmInput;
+using asr_ism::IsmResult;
+
+namespace {
+
+// The results of one ISM and, per input, where that input came from: the index of the estimate
+// in the configuration for a real object, the index of the child ISM's result for a placeholder.
+struct EvaluatedIsm {
+  std::vector<IsmResult> results;
+  std::vector<int> input_origin;
+};
+
+// One leaf of the tree as it takes part in an assembled instance.
+struct LeafOutcome {
+  int object = -1;
+  int estimate = -1;  // -1 if unmatched
+  double contribution = 0.0;
+  double position_compliance = 0.0;
+  double orientation_compliance = 0.0;
+};
+
+class InstanceAssembler {
+ public:
+  InstanceAssembler(const IsmTree& tree, const std::vector<EvaluatedIsm>& evaluated)
+      : tree_(tree), evaluated_(evaluated) {}
+
+  // Follows the links from placeholder matches down to the child results (Algo. 3 and 4).
+  void collect(int ism, int result_index, double factor, std::vector<LeafOutcome>& leaves,
+               std::vector<InstanceIsm>& isms) const {
+    const IsmResult* result = result_index >= 0 ? &evaluated_[ism].results[result_index] : nullptr;
+    if (result != nullptr) {
+      isms[ism].objective = result->objective;
+      isms[ism].reference_pose = result->reference_pose;
+      isms[ism].recognized = true;
+    }
+    const auto& members = tree_.isms[ism].members;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const asr_ism::MemberMatch* match =
+          result != nullptr && result->matches[m].matched() ? &result->matches[m] : nullptr;
+      const int origin = match ? evaluated_[ism].input_origin[match->input] : -1;
+      const double contribution = match ? factor * match->similarity() : 0.0;
+      if (members[m].isPlaceholder()) {
+        collect(members[m].child_ism, origin, contribution, leaves, isms);
+        continue;
+      }
+      LeafOutcome leaf;
+      leaf.object = tree_.topology.indexOf(members[m].object);
+      if (match) {
+        leaf.estimate = origin;
+        leaf.contribution = contribution;
+        leaf.position_compliance = match->position_compliance;
+        leaf.orientation_compliance = match->orientation_compliance;
+      }
+      leaves.push_back(leaf);
+    }
+  }
+
+ private:
+  const IsmTree& tree_;
+  const std::vector<EvaluatedIsm>& evaluated_;
+};
+
+}  // namespace
+
+TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters parameters,
+                               asr_ism::ThreadPool* pool)
+    : tree_(tree), parameters_(parameters), pool_(pool) {
+  tree_.validate("ISM tree");
+  if (parameters_.results_passed_up == 0) {
+    throw asr_ism::InputError("tree recognition: results_passed_up must be at least 1");
+  }
+  levels_.resize(tree_.height());
+  for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
+    levels_[levels_.size() - 1 - tree_.level[ism]].push_back(static_cast<int>(ism));
+  }
+  for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
+    const auto& members = tree_.isms[ism].members;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      if (!members[m].isPlaceholder()) {
+        leaves_.push_back({static_cast<int>(ism), static_cast<int>(m),
+                           tree_.topology.indexOf(members[m].object)});
+      }
+    }
+  }
+}
+
+std::vector<SceneInstance> TreeRecognizer::recognize(const asr_ism::Configuration& configuration,
+                                                     TreeRecognitionStats* stats) const {
+  // Validate, then visit estimates in a canonical order so the input order cannot matter.
+  std::vector<Pose> poses;
+  poses.reserve(configuration.size());
+  for (std::size_t i = 0; i < configuration.size(); ++i) {
+    const auto& estimate = configuration[i];
+    poses.push_back(asr_ism::validatedPose(
+        estimate.pose.position, estimate.pose.orientation,
+        "object estimate " + std::to_string(i) + " (" + estimate.key.toString() + ")"));
+  }
+  std::vector<int> canonical(configuration.size());
+  std::iota(canonical.begin(), canonical.end(), 0);
+  const auto sort_key = [&](int i) {
+    const Pose& p = poses[i];
+    return std::make_tuple(std::cref(configuration[i].key), p.position.x(), p.position.y(),
+                           p.position.z(), p.orientation.w(), p.orientation.x(), p.orientation.y(),
+                           p.orientation.z(), i);
+  };
+  std::sort(canonical.begin(), canonical.end(),
+            [&](int a, int b) { return sort_key(a) < sort_key(b); });
+  std::vector<std::vector<int>> estimates_of_object(tree_.objects().size());
+  for (int i : canonical) {
+    const int object = tree_.topology.indexOf(configuration[i].key);
+    if (object >= 0)
+      estimates_of_object[object].push_back(i);
+  }
+
+  // Bottom-up evaluation (Algo. 2), level by level; the ISMs of one level are independent.
+  std::vector<EvaluatedIsm> evaluated(tree_.isms.size());
+  std::vector<asr_ism::IsmRecognitionStats> ism_stats(tree_.isms.size());
+  const auto evaluate = [&](int ism) {
+    const auto& members = tree_.isms[ism].members;
+    std::vector<IsmInput> inputs;
+    EvaluatedIsm& current = evaluated[ism];
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      if (members[m].isPlaceholder()) {
+        const auto& child_results = evaluated[members[m].child_ism].results;
+        for (std::size_t r = 0; r < child_results.size(); ++r) {
+          inputs.push_back({static_cast<int>(m), child_results[r].reference_pose,
+                            child_results[r].objective, child_results[r].estimates});
+          current.input_origin.push_back(static_cast<int>(r));
+        }
+        continue;
+      }
+      for (int estimate : estimates_of_object[tree_.topology.indexOf(members[m].object)]) {
+        inputs.push_back({static_cast<int>(m), poses[estimate], 1.0, {estimate}});
+        current.input_origin.push_back(estimate);
+      }
+    }
+    asr_ism::IsmResultSelection selection;
+    selection.best_count = ism == 0 ? 0 : parameters_.results_passed_up;
+    current.results = asr_ism::recognizeIsm(tree_.isms[ism], inputs, tree_.parameters, selection,
+                                            &ism_stats[ism]);
+  };
+  for (const std::vector<int>& level : levels_) {
+    if (pool_ != nullptr && level.size() > 1) {
+      pool_->parallelFor(level.size(), [&](std::size_t i) { evaluate(level[i]); });
+    } else {
+      for (int ism : level)
+        evaluate(ism);
+    }
+  }
+  if (stats != nullptr) {
+    *stats = TreeRecognitionStats{};
+    for (const auto& s : ism_stats) {
+      stats->isms.votes += s.votes;
+      stats->isms.bins += s.bins;
+      stats->isms.candidates += s.candidates;
+      stats->isms.comparisons += s.comparisons;
+    }
+    stats->root_results = evaluated[0].results.size();
+  }
+
+  // Top-down assembly (Algo. 3 and 4) of every root result.
+  const InstanceAssembler assembler(tree_, evaluated);
+  const double leaf_count = static_cast<double>(leaves_.size());
+  std::vector<SceneInstance> instances;
+  for (std::size_t r = 0; r < evaluated[0].results.size(); ++r) {
+    std::vector<LeafOutcome> leaves;
+    SceneInstance instance;
+    instance.scene = tree_.scene;
+    instance.isms.resize(tree_.isms.size());
+    for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
+      instance.isms[ism].name = tree_.isms[ism].name;
+    }
+    assembler.collect(0, static_cast<int>(r), 1.0, leaves, instance.isms);
+    const IsmResult& root = evaluated[0].results[r];
+    instance.pose = root.reference_pose;
+    instance.confidence = std::min(1.0, root.objective / leaf_count);
+
+    for (std::size_t object = 0; object < tree_.objects().size(); ++object) {
+      InstanceObject entry;
+      entry.key = tree_.objects()[object];
+      double best_contribution = -1.0;
+      int matched = 0;
+      for (const LeafOutcome& leaf : leaves) {
+        if (leaf.object != static_cast<int>(object))
+          continue;
+        ++entry.appearances;
+        entry.similarity += leaf.contribution;
+        if (leaf.estimate < 0)
+          continue;
+        ++matched;
+        entry.position_compliance += leaf.position_compliance;
+        entry.orientation_compliance += leaf.orientation_compliance;
+        if (leaf.contribution > best_contribution) {
+          best_contribution = leaf.contribution;
+          entry.estimate = leaf.estimate;
+        }
+      }
+      if (entry.estimate < 0) {
+        if (estimates_of_object[object].empty()) {
+          instance.missing.push_back(entry.key);
+          continue;
+        }
+        entry.estimate = estimates_of_object[object].front();
+      }
+      entry.pose = poses[entry.estimate];
+      entry.similarity /= std::max(1, entry.appearances);
+      if (matched > 0) {
+        entry.position_compliance /= matched;
+        entry.orientation_compliance /= matched;
+      }
+      instance.objects.push_back(entry);
+    }
+    instances.push_back(std::move(instance));
+  }
+  return instances;
+}
+
+}  // namespace asr_ism_tree
