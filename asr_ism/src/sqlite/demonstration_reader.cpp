@@ -77,9 +77,13 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
   while (sets.step())
     step_of_set[sets.columnInt(0)] = demonstration.addStep();
 
+  // Column 10 flags rows where every pose value is stored as a number.
+  std::string all_numeric = "1";
+  for (const char* column : {"px", "py", "pz", "qw", "qx", "qy", "qz"})
+    all_numeric += std::string(" AND typeof(p.") + column + ") IN ('real', 'integer')";
   Statement poses = db.prepare(
-      "SELECT p.id, p.objectId, p.setId, p.px, p.py, p.pz, p.qw, p.qx, p.qy, p.qz "
-      "FROM recorded_poses p JOIN recorded_sets s ON s.id = p.setId "
+      "SELECT p.id, p.objectId, p.setId, p.px, p.py, p.pz, p.qw, p.qx, p.qy, p.qz, " + all_numeric +
+      " FROM recorded_poses p JOIN recorded_sets s ON s.id = p.setId "
       "WHERE s.patternId = ? ORDER BY p.id");
   poses.bind(1, pattern_id);
   while (poses.step()) {
@@ -87,8 +91,11 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
         path + ", scene '" + scene + "', recorded_poses id " + std::to_string(poses.columnInt(0));
     for (int column = 3; column <= 9; ++column) {
       if (poses.isNull(column))
-        throw InputError(row + ": a pose value is missing");
+        throw InputError(row + ": a pose value is missing (NULL, as SQLite stores a NaN)");
     }
+    // SQLite would read text in a pose column as 0 without complaint.
+    if (poses.columnInt(10) == 0)
+      throw InputError(row + ": a pose value is not a number");
     const Pose pose = validatedPose(
         Eigen::Vector3d(poses.columnDouble(3), poses.columnDouble(4), poses.columnDouble(5)),
         Eigen::Quaterniond(poses.columnDouble(6), poses.columnDouble(7), poses.columnDouble(8),
