@@ -1,0 +1,139 @@
+#include "asr_ism/configuration_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <sys/stat.h>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+#include "asr_ism/input_error.hpp"
+
+namespace asr_ism {
+namespace {
+
+double numberField(const YAML::Node& parent, const char* field, const std::string& what) {
+  const YAML::Node node = parent[field];
+  if (!node)
+    throw InputError(what + ": field '" + field + "' is missing");
+  if (!node.IsScalar())
+    throw InputError(what + ": field '" + field + "' is not a number");
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw InputError(what + ": field '" + field + "' is not a number ('" + node.Scalar() + "')");
+  }
+}
+
+YAML::Node mapField(const YAML::Node& parent, const char* field, const std::string& what) {
+  const YAML::Node node = parent[field];
+  if (!node)
+    throw InputError(what + ": field '" + field + "' is missing");
+  if (!node.IsMap())
+    throw InputError(what + ": field '" + field + "' is not a mapping");
+  return node;
+}
+
+ObjectEstimate readObject(const YAML::Node& node, const std::string& what) {
+  if (!node.IsMap())
+    throw InputError(what + ": is not a mapping with type, id and pose");
+  ObjectEstimate estimate;
+  const YAML::Node type = node["type"];
+  if (!type || !type.IsScalar() || type.Scalar().empty()) {
+    throw InputError(what + ": field 'type' is missing or empty");
+  }
+  estimate.key.type = type.Scalar();
+  const YAML::Node id = node["id"];
+  if (id) {
+    if (!id.IsScalar())
+      throw InputError(what + ": field 'id' is not a scalar");
+    estimate.key.id = id.Scalar();
+  }
+  const std::string named = what + " (" + estimate.key.toString() + ")";
+  const YAML::Node pose = mapField(node, "pose", named);
+  const YAML::Node position = mapField(pose, "position", named + " pose");
+  const YAML::Node orientation = mapField(pose, "orientation", named + " pose");
+  estimate.pose =
+      validatedPose(Eigen::Vector3d(numberField(position, "x", named + " position"),
+                                    numberField(position, "y", named + " position"),
+                                    numberField(position, "z", named + " position")),
+                    Eigen::Quaterniond(numberField(orientation, "w", named + " orientation"),
+                                       numberField(orientation, "x", named + " orientation"),
+                                       numberField(orientation, "y", named + " orientation"),
+                                       numberField(orientation, "z", named + " orientation")),
+                    named);
+  return estimate;
+}
+
+// YAML double-quoted scalar, so any type or id text survives the round trip.
+std::string quoted(const std::string& text) {
+  std::string result = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\')
+      result += '\\';
+    result += c;
+  }
+  return result + "\"";
+}
+
+}  // namespace
+
+Configuration readConfigurationFile(const std::string& path) {
+  std::ifstream file(path);
+  if (!file)
+    throw InputError(path + ": cannot open the objects file");
+  YAML::Node root;
+  try {
+    root = YAML::Load(file);
+  } catch (const YAML::ParserException& error) {
+    throw InputError(path + ": malformed YAML/JSON at line " + std::to_string(error.mark.line + 1) +
+                     ": " + error.msg);
+  }
+  if (!root.IsMap() || !root["objects"]) {
+    throw InputError(path + ": expected a mapping with a list 'objects'");
+  }
+  const YAML::Node objects = root["objects"];
+  if (!objects.IsSequence())
+    throw InputError(path + ": 'objects' is not a list");
+  Configuration configuration;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    configuration.push_back(readObject(objects[i], path + ": object " + std::to_string(i)));
+  }
+  return configuration;
+}
+
+void writeConfigurationFile(const std::string& path, const Configuration& configuration,
+                            bool overwrite) {
+  struct stat info;
+  if (!overwrite && stat(path.c_str(), &info) == 0) {
+    throw InputError(path + ": exists already; not overwritten");
+  }
+  std::ostringstream text;
+  text << std::setprecision(std::numeric_limits<double>::max_digits10);
+  text << "objects:\n";
+  for (const ObjectEstimate& estimate : configuration) {
+    const Pose& pose = estimate.pose;
+    text << "  - type: " << quoted(estimate.key.type) << "\n"
+         << "    id: " << quoted(estimate.key.id) << "\n"
+         << "    pose:\n"
+         << "      position: {x: " << pose.position.x() << ", y: " << pose.position.y()
+         << ", z: " << pose.position.z() << "}\n"
+         << "      orientation: {x: " << pose.orientation.x() << ", y: " << pose.orientation.y()
+         << ", z: " << pose.orientation.z() << ", w: " << pose.orientation.w() << "}\n";
+  }
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream file(temporary, std::ios::trunc);
+    file << text.str();
+    if (!file.flush())
+      throw InputError(temporary + ": cannot write");
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw InputError(path + ": cannot write");
+  }
+}
+
+}  // namespace asr_ism
