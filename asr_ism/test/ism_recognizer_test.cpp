@@ -1,0 +1,362 @@
+#include "asr_ism/ism_recognizer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "asr_ism/compliance.hpp"
+#include "asr_ism/input_error.hpp"
+#include "asr_ism/voting_space.hpp"
+
+namespace asr_ism {
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+Pose makePose(double x, double y, double z, double angle = 0.0,
+              const Eigen::Vector3d& axis = Eigen::Vector3d::UnitZ()) {
+  return Pose(Eigen::Vector3d(x, y, z), Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)));
+}
+
+// A hand-made ISM of three members: the reference R (voting with the identity), A one 0.25 m
+// below it (so turning A about its own z axis changes only the orientation of its vote) and B
+// beside it, turned by 90 degrees.
+enum Member { kR = 0, kA = 1, kB = 2 };
+
+Ism threeMemberIsm() {
+  Ism ism;
+  ism.name = "hand_made";
+  ism.reference = {"R", ""};
+  ism.members = {{{"R", ""}, -1, {{Pose::identity(), 1}}},
+                 {{"A", ""}, -1, {{makePose(0.0, 0.0, 0.25), 1}}},
+                 {{"B", ""}, -1, {{makePose(-0.3, 0.1, 0.0, M_PI / 2), 1}}}};
+  return ism;
+}
+
+// Where a member stands when the reference is at `reference`: reference * inverse(relative pose).
+Pose memberPose(const Ism& ism, int member, const Pose& reference, std::size_t relative = 0) {
+  return compose(reference,
+                 inverse(ism.members[member].relative_poses[relative].reference_in_member));
+}
+
+// A reference pose away from bin borders and with a turn, so nothing is axis-aligned by luck.
+const Pose kScene = makePose(1.03, 2.04, 0.77, 0.4, Eigen::Vector3d::UnitZ());
+
+std::vector<IsmInput> perfectInputs(const Ism& ism, const Pose& reference = kScene) {
+  std::vector<IsmInput> inputs;
+  for (int m = 0; m < static_cast<int>(ism.members.size()); ++m)
+    inputs.push_back({m, memberPose(ism, m, reference), 1.0, {}});
+  return inputs;
+}
+
+Pose movedBy(const Pose& pose, const Eigen::Vector3d& shift) {
+  return Pose(pose.position + shift, pose.orientation);
+}
+
+Pose turnedAboutOwnZ(const Pose& pose, double angle) {
+  return Pose(pose.position, pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(
+                                                    angle, Eigen::Vector3d::UnitZ())));
+}
+
+TEST(IsmRecognizer, PerfectConfigurationMatchesEveryMemberFully) {
+  const Ism ism = threeMemberIsm();
+  const auto results = recognizeIsm(ism, perfectInputs(ism), {});
+  ASSERT_FALSE(results.empty());
+  const IsmResult& best = results[0];
+  EXPECT_NEAR(best.objective, 3.0, 1e-9);
+  ASSERT_EQ(best.matches.size(), 3u);
+  for (int m = 0; m < 3; ++m) {
+    EXPECT_EQ(best.matches[m].input, m);
+    EXPECT_EQ(best.matches[m].relative_pose, 0);
+    EXPECT_NEAR(best.matches[m].position_compliance, 1.0, 1e-9);
+    EXPECT_NEAR(best.matches[m].orientation_compliance, 1.0, 1e-9);
+  }
+  EXPECT_TRUE(approximatelyEqual(best.reference_pose, kScene, 1e-9, 1e-9));
+  // The one consistent combination is reported once.
+  EXPECT_EQ(results.size(), 1u);
+}
+
+TEST(IsmRecognizer, ObjectMovedBeyondTheBinSizeIsUnmatched) {
+  const Ism ism = threeMemberIsm();
+  const IsmRecognitionParameters parameters;  // bin 0.1 m
+  for (double shift : {0.101, 0.15, 0.3}) {
+    auto inputs = perfectInputs(ism);
+    inputs[kA].pose = movedBy(inputs[kA].pose, Eigen::Vector3d(shift, 0.0, 0.0));
+    const auto results = recognizeIsm(ism, inputs, parameters);
+    ASSERT_FALSE(results.empty());
+    EXPECT_FALSE(results[0].matches[kA].matched()) << shift;
+    EXPECT_EQ(results[0].matches[kA].similarity(), 0.0) << shift;
+    EXPECT_NEAR(results[0].objective, 2.0, 1e-9) << shift;
+  }
+  // Just inside the bin size it still counts, barely.
+  auto inputs = perfectInputs(ism);
+  inputs[kA].pose = movedBy(inputs[kA].pose, Eigen::Vector3d(0.099, 0.0, 0.0));
+  const auto results = recognizeIsm(ism, inputs, parameters);
+  ASSERT_TRUE(results[0].matches[kA].matched());
+  EXPECT_NEAR(results[0].matches[kA].position_compliance, 1.0 - 0.99 * 0.99, 1e-9);
+}
+
+TEST(IsmRecognizer, ObjectTurnedBeyondTheMaximumAngleIsUnmatched) {
+  const Ism ism = threeMemberIsm();
+  const IsmRecognitionParameters parameters;  // 30 degrees
+  for (double degrees : {31.0, 45.0, 90.0, 180.0}) {
+    auto inputs = perfectInputs(ism);
+    inputs[kA].pose = turnedAboutOwnZ(inputs[kA].pose, degrees * kDegree);
+    const auto results = recognizeIsm(ism, inputs, parameters);
+    ASSERT_FALSE(results.empty());
+    EXPECT_FALSE(results[0].matches[kA].matched()) << degrees;
+    EXPECT_NEAR(results[0].objective, 2.0, 1e-9) << degrees;
+  }
+  auto inputs = perfectInputs(ism);
+  inputs[kA].pose = turnedAboutOwnZ(inputs[kA].pose, 29.0 * kDegree);
+  const auto results = recognizeIsm(ism, inputs, parameters);
+  EXPECT_TRUE(results[0].matches[kA].matched());
+  EXPECT_NEAR(results[0].matches[kA].position_compliance, 1.0, 1e-9);
+}
+
+TEST(IsmRecognizer, PositionComplianceAtHalfTheBinSize) {
+  const Ism ism = threeMemberIsm();
+  IsmRecognitionParameters parameters;
+  parameters.bin_size = 0.2;
+  auto inputs = perfectInputs(ism);
+  // A diagonal shift of length 0.1 = half the bin size: 1 - (d / b)^2 = 0.75.
+  inputs[kA].pose = movedBy(inputs[kA].pose, Eigen::Vector3d(0.06, -0.08, 0.0));
+  const auto results = recognizeIsm(ism, inputs, parameters);
+  ASSERT_FALSE(results.empty());
+  const MemberMatch& a = results[0].matches[kA];
+  ASSERT_TRUE(a.matched());
+  EXPECT_NEAR(a.position_compliance, 0.75, 1e-9);
+  EXPECT_NEAR(a.orientation_compliance, 1.0, 1e-9);
+  EXPECT_NEAR(a.similarity(), 0.75, 1e-9);
+  EXPECT_NEAR(results[0].objective, 2.75, 1e-9);
+  // The hypothesis is where R and B agree, not where A's vote is.
+  EXPECT_TRUE(approximatelyEqual(results[0].reference_pose, kScene, 1e-9, 1e-9));
+}
+
+TEST(IsmRecognizer, OrientationComplianceAtHalfTheMaximumAngle) {
+  const Ism ism = threeMemberIsm();
+  IsmRecognitionParameters parameters;
+  parameters.max_angle_deviation = 40.0 * kDegree;
+  auto inputs = perfectInputs(ism);
+  inputs[kA].pose = turnedAboutOwnZ(inputs[kA].pose, 20.0 * kDegree);
+  const auto results = recognizeIsm(ism, inputs, parameters);
+  ASSERT_FALSE(results.empty());
+  const MemberMatch& a = results[0].matches[kA];
+  ASSERT_TRUE(a.matched());
+  // compliance.hpp: 1 - sin^2(theta / 2) / sin^2(theta_max / 2) ...
+  const double expected =
+      1.0 - std::pow(std::sin(10.0 * kDegree), 2) / std::pow(std::sin(20.0 * kDegree), 2);
+  EXPECT_NEAR(a.orientation_compliance, expected, 1e-9);
+  // ... which is close to 1 - (theta / theta_max)^2 = 0.75.
+  EXPECT_NEAR(a.orientation_compliance, 0.75, 0.01);
+  EXPECT_NEAR(a.position_compliance, 1.0, 1e-9);
+  EXPECT_NEAR(results[0].objective, 2.0 + expected, 1e-9);
+}
+
+TEST(IsmRecognizer, InputWeightScalesTheContribution) {
+  const Ism ism = threeMemberIsm();
+  auto inputs = perfectInputs(ism);
+  inputs[kB].weight = 2.5;  // as a placeholder standing for a child result of objective 2.5
+  const auto results = recognizeIsm(ism, inputs, {});
+  ASSERT_FALSE(results.empty());
+  EXPECT_NEAR(results[0].objective, 4.5, 1e-9);
+  EXPECT_NEAR(results[0].matches[kB].similarity(), 1.0, 1e-9);
+}
+
+TEST(IsmRecognizer, ClutterInputsDoNotRaiseTheObjective) {
+  const Ism ism = threeMemberIsm();
+  auto inputs = perfectInputs(ism);
+  // Extra estimates of the members, all inconsistent with the scene at kScene: far away, near but
+  // turned, and one of R placed where it would fit a different scene pose.
+  inputs.push_back({kB, makePose(4.0, -3.0, 0.2), 1.0, {}});
+  inputs.push_back({kA, turnedAboutOwnZ(inputs[kA].pose, 90.0 * kDegree), 1.0, {}});
+  inputs.push_back({kR, movedBy(kScene, Eigen::Vector3d(0.5, 0.5, 0.0)), 1.0, {}});
+  inputs.push_back({kB, movedBy(inputs[kB].pose, Eigen::Vector3d(0.0, 0.0, 0.3)), 1.0, {}});
+  const auto results = recognizeIsm(ism, inputs, {});
+  ASSERT_FALSE(results.empty());
+  EXPECT_NEAR(results[0].objective, 3.0, 1e-9);
+  for (const IsmResult& result : results)
+    EXPECT_LE(result.objective, 3.0 + 1e-9);
+  // The best result uses the three consistent inputs.
+  for (int m = 0; m < 3; ++m)
+    EXPECT_EQ(results[0].matches[m].input, m);
+  for (std::size_t r = 1; r < results.size(); ++r)
+    EXPECT_LT(results[r].objective, 2.0 + 1e-9);
+}
+
+TEST(IsmRecognizer, TwoInputsForOneMemberCountOnce) {
+  const Ism ism = threeMemberIsm();
+  auto inputs = perfectInputs(ism);
+  inputs.push_back(inputs[kA]);  // an exact duplicate of A (index 3)
+  auto results = recognizeIsm(ism, inputs, {});
+  ASSERT_FALSE(results.empty());
+  EXPECT_NEAR(results[0].objective, 3.0, 1e-9);
+  EXPECT_TRUE(results[0].matches[kA].input == kA || results[0].matches[kA].input == 3);
+
+  // A second A 2 cm off: the better one is used, the other adds nothing.
+  inputs.back().pose = movedBy(inputs[kA].pose, Eigen::Vector3d(0.02, 0.0, 0.0));
+  results = recognizeIsm(ism, inputs, {});
+  ASSERT_FALSE(results.empty());
+  EXPECT_NEAR(results[0].objective, 3.0, 1e-9);
+  EXPECT_EQ(results[0].matches[kA].input, kA);
+}
+
+TEST(IsmRecognizer, BestCountCapsTheResults) {
+  const Ism ism = threeMemberIsm();
+  // Four copies of the scene 2 m apart; in copy k, A is off by shift[k], so copy k has objective
+  // 2 + 1 - (shift[k] / 0.1)^2. The ranks (2, 0, 3, 1) do not follow the copies' order in space,
+  // so the search meets good results after worse ones.
+  const double shifts[] = {0.04, 0.0, 0.06, 0.02};
+  const int copy_of_rank[] = {1, 3, 0, 2};
+  std::vector<IsmInput> inputs;
+  for (int copy = 0; copy < 4; ++copy) {
+    const Pose reference = movedBy(kScene, Eigen::Vector3d(2.0 * copy, 0.0, 0.0));
+    auto copy_inputs = perfectInputs(ism, reference);
+    copy_inputs[kA].pose = movedBy(copy_inputs[kA].pose, Eigen::Vector3d(0.0, shifts[copy], 0.0));
+    inputs.insert(inputs.end(), copy_inputs.begin(), copy_inputs.end());
+  }
+  const auto all = recognizeIsm(ism, inputs, {}, IsmResultSelection{0});
+  ASSERT_EQ(all.size(), 4u);
+  for (int rank = 0; rank < 4; ++rank) {
+    const int copy = copy_of_rank[rank];
+    const double relative_shift = shifts[copy] / 0.1;
+    EXPECT_NEAR(all[rank].objective, 3.0 - relative_shift * relative_shift, 1e-9) << rank;
+    EXPECT_EQ(all[rank].matches[kR].input, 3 * copy);
+  }
+  for (std::size_t count : {1u, 2u, 3u}) {
+    const auto capped = recognizeIsm(ism, inputs, {}, IsmResultSelection{count});
+    ASSERT_EQ(capped.size(), count);
+    for (std::size_t r = 0; r < count; ++r) {
+      EXPECT_EQ(capped[r].objective, all[r].objective);
+      EXPECT_EQ(capped[r].matches[kR].input, all[r].matches[kR].input);
+    }
+  }
+  EXPECT_EQ(recognizeIsm(ism, inputs, {}, IsmResultSelection{10}).size(), 4u);
+}
+
+TEST(IsmRecognizer, ResultsUsingOnlyEstimatesOfABetterResultAreDroppedForTheRoot) {
+  Ism ism = threeMemberIsm();
+  // A second relative pose of A sends a vote 1 m away, where it forms a result of A alone.
+  ism.members[kA].relative_poses.push_back({makePose(1.0, 0.0, 0.25), 1});
+  auto inputs = perfectInputs(ism);
+  for (int i = 0; i < 3; ++i)
+    inputs[i].estimates = {10 + i};
+  const auto root = recognizeIsm(ism, inputs, {}, IsmResultSelection{0});
+  ASSERT_EQ(root.size(), 1u);
+  EXPECT_NEAR(root[0].objective, 3.0, 1e-9);
+  EXPECT_EQ(root[0].estimates, (std::vector<int>{10, 11, 12}));
+
+  // A sub-ISM passing results up keeps the lone one: it matches a different assignment.
+  const auto sub = recognizeIsm(ism, inputs, {}, IsmResultSelection{4});
+  ASSERT_EQ(sub.size(), 2u);
+  EXPECT_NEAR(sub[1].objective, 1.0, 1e-9);
+  EXPECT_EQ(sub[1].matches[kA].relative_pose, 1);
+  EXPECT_EQ(sub[1].estimates, (std::vector<int>{11}));
+}
+
+TEST(IsmRecognizer, EarlierFoundResultIsDroppedWhenABetterOneUsesAllItsEstimates) {
+  // Far from the scene, a heavy placeholder-like input of B (weight 2.5, standing for estimate 10,
+  // which R's input stands for too) and a second vote of A 0.15 m beside it: their bins promise
+  // 3.5, more than the scene's 3, so they are searched first, but they only reach 2.5 (B' alone)
+  // and 1 (A' alone). The scene found afterwards uses estimates 10, 11 and 12: both earlier
+  // results use only estimates of that better result and must not reach the root's answer.
+  Ism ism = threeMemberIsm();
+  auto inputs = perfectInputs(ism);
+  for (int i = 0; i < 3; ++i)
+    inputs[i].estimates = {10 + i};
+  const Pose far_reference = movedBy(kScene, Eigen::Vector3d(2.0, 0.0, 0.0));
+  inputs.push_back({kB, memberPose(ism, kB, far_reference), 2.5, {10}});
+  ism.members[kA].relative_poses.push_back(
+      {relativePose(inputs[kA].pose, movedBy(far_reference, Eigen::Vector3d(0.15, 0.0, 0.0))), 1});
+
+  const auto root = recognizeIsm(ism, inputs, {}, IsmResultSelection{0});
+  ASSERT_EQ(root.size(), 1u);
+  EXPECT_NEAR(root[0].objective, 3.0, 1e-9);
+  EXPECT_EQ(root[0].estimates, (std::vector<int>{10, 11, 12}));
+
+  // For a sub-ISM the lone results are distinct hypotheses and go up, best first.
+  const auto sub = recognizeIsm(ism, inputs, {}, IsmResultSelection{4});
+  ASSERT_EQ(sub.size(), 3u);
+  EXPECT_NEAR(sub[0].objective, 3.0, 1e-9);
+  EXPECT_NEAR(sub[1].objective, 2.5, 1e-9);
+  EXPECT_NEAR(sub[2].objective, 1.0, 1e-9);
+}
+
+TEST(IsmRecognizer, VoteExactlyOnABinBorderMatchesAHypothesisInTheNeighbouringBin) {
+  // Bin size and coordinates exactly representable in binary, identity orientations, so the
+  // votes land exactly where written. R and B vote at the centre of cell (0, 0, 0); A's vote lands
+  // exactly on the border of the next cell(s). Only the search over neighbouring bins can match it.
+  const double bin = 0.125;
+  IsmRecognitionParameters parameters;
+  parameters.bin_size = bin;
+  Ism ism;
+  ism.name = "border";
+  ism.reference = {"R", ""};
+  ism.members = {{{"R", ""}, -1, {{Pose::identity(), 1}}},
+                 {{"A", ""}, -1, {{makePose(-0.25, 0.0, 0.0), 1}}},
+                 {{"B", ""}, -1, {{Pose::identity(), 1}}}};
+  const Eigen::Vector3d centre(0.0625, 0.0625, 0.0625);
+  struct Case {
+    Eigen::Vector3d a_vote;
+    double compliance;  // 1 - |a_vote - centre|^2 / bin^2
+  };
+  const Case cases[] = {{{0.125, 0.0625, 0.0625}, 0.75},  // face neighbour
+                        {{0.125, 0.125, 0.0625}, 0.5},    // edge neighbour
+                        {{0.125, 0.125, 0.125}, 0.25}};   // corner neighbour
+  for (const Case& c : cases) {
+    ASSERT_NE(VotingSpace::cellOf(c.a_vote.x(), bin), VotingSpace::cellOf(centre.x(), bin));
+    const std::vector<IsmInput> inputs = {
+        {kR, Pose(centre, Eigen::Quaterniond::Identity()), 1.0, {}},
+        {kA,
+         Pose(c.a_vote + Eigen::Vector3d(0.25, 0.0, 0.0), Eigen::Quaterniond::Identity()),
+         1.0,
+         {}},
+        {kB, Pose(centre, Eigen::Quaterniond::Identity()), 1.0, {}}};
+    const auto results = recognizeIsm(ism, inputs, parameters);
+    ASSERT_FALSE(results.empty());
+    EXPECT_EQ(results[0].reference_pose.position, centre);
+    ASSERT_TRUE(results[0].matches[kA].matched()) << c.a_vote.transpose();
+    EXPECT_DOUBLE_EQ(results[0].matches[kA].position_compliance, c.compliance);
+    EXPECT_DOUBLE_EQ(results[0].objective, 2.0 + c.compliance);
+  }
+}
+
+TEST(IsmRecognizer, ResultsAreDeterministic) {
+  const Ism ism = threeMemberIsm();
+  auto inputs = perfectInputs(ism);
+  inputs.push_back({kB, movedBy(inputs[kB].pose, Eigen::Vector3d(0.03, 0.01, 0.0)), 1.0, {}});
+  inputs.push_back({kA, movedBy(inputs[kA].pose, Eigen::Vector3d(0.6, 0.0, 0.0)), 1.0, {}});
+  const auto first = recognizeIsm(ism, inputs, {});
+  const auto second = recognizeIsm(ism, inputs, {});
+  ASSERT_EQ(first.size(), second.size());
+  for (std::size_t r = 0; r < first.size(); ++r) {
+    EXPECT_EQ(first[r].objective, second[r].objective);
+    EXPECT_EQ(first[r].reference_pose.position, second[r].reference_pose.position);
+    for (std::size_t m = 0; m < first[r].matches.size(); ++m)
+      EXPECT_EQ(first[r].matches[m].input, second[r].matches[m].input);
+  }
+}
+
+TEST(IsmRecognizer, InvalidParametersAndInputsAreRejected) {
+  const Ism ism = threeMemberIsm();
+  IsmRecognitionParameters zero_bin;
+  zero_bin.bin_size = 0.0;
+  EXPECT_THROW(recognizeIsm(ism, perfectInputs(ism), zero_bin), InputError);
+  IsmRecognitionParameters zero_angle;
+  zero_angle.max_angle_deviation = 0.0;
+  EXPECT_THROW(recognizeIsm(ism, perfectInputs(ism), zero_angle), InputError);
+  auto bad_member = perfectInputs(ism);
+  bad_member[0].member = 3;
+  EXPECT_THROW(recognizeIsm(ism, bad_member, {}), InputError);
+  auto bad_weight = perfectInputs(ism);
+  bad_weight[1].weight = 0.0;
+  EXPECT_THROW(recognizeIsm(ism, bad_weight, {}), InputError);
+  auto not_finite = perfectInputs(ism);
+  not_finite[2].pose.position.x() = std::nan("");
+  EXPECT_THROW(recognizeIsm(ism, not_finite, {}), InputError);
+  // No input, no result.
+  EXPECT_TRUE(recognizeIsm(ism, {}, {}).empty());
+}
+
+}  // namespace
+}  // namespace asr_ism
