@@ -33,6 +33,7 @@ struct TreeRecognitionStats {
 /// whatever the pool's size. Clutter (objects the scene does not know) is ignored.
 class TreeRecognizer {
  public:
+  /// The tree (and the pool, if given) must outlive the recognizer.
   explicit TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters parameters = {},
                           asr_ism::ThreadPool* pool = nullptr);
 
