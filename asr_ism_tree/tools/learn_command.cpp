@@ -1,0 +1,72 @@
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+#include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism_tree/sqlite/model_store.hpp"
+#include "asr_ism_tree/star_center.hpp"
+#include "asr_ism_tree/topology_file.hpp"
+#include "asr_ism_tree/tree_generation.hpp"
+#include "command_line.hpp"
+#include "commands.hpp"
+#include "object_lookup.hpp"
+
+namespace asr_ism_tree::tools {
+
+int runLearn(const std::vector<std::string>& arguments) {
+  const CommandLine options(
+      arguments, {"demo", "scene", "topology", "star-center", "model", "bin-size", "max-angle-deg"},
+      {});
+  const std::string demo_path = options.required("demo");
+  const std::string scene = options.required("scene");
+  const std::string topology_spec = options.required("topology");
+  const std::string model_path = options.required("model");
+  asr_ism::IsmRecognitionParameters parameters;
+  parameters.bin_size = options.number("bin-size", parameters.bin_size);
+  const double max_angle_deg = options.number("max-angle-deg", 30.0);
+  if (!(parameters.bin_size > 0.0))
+    throw UsageError{"--bin-size must be > 0"};
+  if (!(max_angle_deg > 0.0 && max_angle_deg <= 180.0)) {
+    throw UsageError{"--max-angle-deg must be in (0, 180]"};
+  }
+  parameters.max_angle_deviation = max_angle_deg * M_PI / 180.0;
+  if (options.has("star-center") && topology_spec != "star") {
+    throw UsageError{"--star-center only applies to --topology star"};
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(demo_path, scene);
+  RelationTopology topology;
+  std::string topology_description;
+  if (topology_spec == "star") {
+    const std::size_t center =
+        options.has("star-center")
+            ? findObject(options.required("star-center"), demonstration.objects(), "--star-center")
+            : chooseStarCenter(demonstration);
+    topology = RelationTopology::star(demonstration.objects(), center);
+    topology_description = "star centred on " + demonstration.objects()[center].toString();
+  } else if (topology_spec == "complete") {
+    topology = RelationTopology::complete(demonstration.objects());
+    topology_description = "complete";
+  } else {
+    topology = readTopologyFile(topology_spec, demonstration.objects());
+    topology_description = "from " + topology_spec;
+  }
+  const IsmTree tree = generateIsmTree(demonstration, topology, parameters);
+  sqlite::saveIsmTree(model_path, tree,
+                      "demonstration " + demo_path + ", topology " + topology_description);
+  const double elapsed_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  std::cout << "learned scene '" << scene << "' from " << demo_path << " ("
+            << demonstration.stepCount() << " time steps, " << demonstration.objectCount()
+            << " objects)\n"
+            << "  topology: " << topology_description << ", " << topology.relationCount()
+            << " relations\n"
+            << "  tree: " << tree.isms.size() << " ISMs in " << tree.height() << " levels, "
+            << tree.leafCount() << " leaves, " << tree.relativePoseCount() << " relative poses\n"
+            << "  stored in " << model_path << " (" << elapsed_ms << " ms)\n";
+  return 0;
+}
+
+}  // namespace asr_ism_tree::tools

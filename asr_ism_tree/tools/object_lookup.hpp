@@ -1,0 +1,15 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "asr_ism/object.hpp"
+
+namespace asr_ism_tree::tools {
+
+/// Index of the object a user named as `type` (if that type is unique) or `type:id`. Throws
+/// InputError naming `what` for an unknown or ambiguous name.
+std::size_t findObject(const std::string& name, const std::vector<asr_ism::ObjectKey>& objects,
+                       const std::string& what);
+
+}  // namespace asr_ism_tree::tools
