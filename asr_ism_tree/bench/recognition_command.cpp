@@ -1,0 +1,102 @@
+#include "recognition_command.hpp"
+
+#include <sys/stat.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+#include "asr_ism/input_error.hpp"
+#include "command_line.hpp"
+#include "recognition_benchmark.hpp"
+#include "report.hpp"
+#include "synthetic_benchmark.hpp"
+#include "targets.hpp"
+
+namespace asr_ism_tree::bench {
+namespace {
+
+using tools::CommandLine;
+using tools::UsageError;
+
+bool isDirectory(const std::string& path) {
+  struct stat info;
+  return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
+}
+
+// --recordings, else $ASR_RECORDINGS_DIR, else the folder beside the source tree.
+std::string recordingsFolder(const CommandLine& options) {
+  if (options.has("recordings"))
+    return options.required("recordings");
+  const char* from_environment = std::getenv("ASR_RECORDINGS_DIR");
+  return from_environment != nullptr ? from_environment : ASR_RECORDINGS_DIR;
+}
+
+void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json) {
+  std::ofstream file(path, std::ios::trunc);
+  file << json.dump(2) << "\n";
+  if (!file.flush())
+    throw asr_ism::InputError(path + ": cannot write the synthetic results");
+}
+
+}  // namespace
+
+int runRecognitionCommand(const std::vector<std::string>& arguments) {
+  const CommandLine options(arguments, {"recordings", "threads", "synthetic-json"},
+                            {"json", "no-synthetic"});
+  BenchmarkSettings settings;
+  settings.threads = static_cast<unsigned>(options.integer("threads", 1));
+  if (settings.threads == 0)
+    throw UsageError{"--threads must be at least 1"};
+  const bool json = options.flag("json");
+  const std::string synthetic_json = options.optional("synthetic-json", "");
+  // In JSON mode stdout carries only the scene array, so the synthetic rows need a file.
+  const bool run_synthetic = !options.flag("no-synthetic") && (!json || !synthetic_json.empty());
+  std::ostream& progress = std::cerr;
+
+  std::vector<SceneRow> scene_rows;
+  const std::string recordings = recordingsFolder(options);
+  if (!isDirectory(recordings)) {
+    progress << "asr_bench: recordings folder '" << recordings
+             << "' not found; skipping the kitchen scenes (give --recordings DIR or set "
+                "ASR_RECORDINGS_DIR)\n";
+  } else {
+    progress << "kitchen scenes from " << recordings << "\n";
+    scene_rows = benchmarkKitchenScenes(recordings, settings, progress);
+  }
+
+  std::vector<SyntheticRow> synthetic_rows;
+  if (run_synthetic) {
+    progress << "synthetic scaling (objects per step count)\n";
+    synthetic_rows = benchmarkSyntheticScaling(settings, progress);
+    if (!synthetic_json.empty()) {
+      writeJsonFile(synthetic_json, syntheticRowsToJson(synthetic_rows));
+      progress << "synthetic rows written to " << synthetic_json << "\n";
+    }
+  } else if (json && !options.flag("no-synthetic")) {
+    progress << "asr_bench: synthetic scaling skipped (with --json, give --synthetic-json FILE "
+                "to run it)\n";
+  }
+
+  const std::vector<TargetCheck> checks = checkTargets(scene_rows, synthetic_rows);
+  if (json) {
+    std::cout << sceneRowsToJson(scene_rows).dump(2) << "\n";
+    printTargets(progress, checks);
+    return 0;
+  }
+  std::cout << "\n";
+  if (!scene_rows.empty()) {
+    printSceneTable(std::cout, scene_rows, settings);
+    std::cout << "\n";
+  } else {
+    std::cout << "Kitchen scenes: skipped, recordings folder '" << recordings << "' not found\n\n";
+  }
+  if (!synthetic_rows.empty()) {
+    printSyntheticTable(std::cout, synthetic_rows, settings);
+    std::cout << "\n";
+  }
+  printTargets(std::cout, checks);
+  return 0;
+}
+
+}  // namespace asr_ism_tree::bench

@@ -1,0 +1,121 @@
+#include "targets.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+namespace asr_ism_tree::bench {
+namespace {
+
+constexpr double kStarMedianMs = 0.5;
+constexpr double kCompleteMedianMs = 3.0;
+constexpr double kGedeckEndeCompleteMedianMs = 70.0;
+constexpr double kSyntheticMedianMs = 50.0;
+constexpr double kLearnMs = 100.0;
+constexpr double kMissingOneTolerance = 0.02;
+
+std::string milliseconds(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.3f ms", value);
+  return buffer;
+}
+
+// The row that is worst by `badness` among rows passing `filter`, or nullptr.
+template <typename Row, typename Filter, typename Badness>
+const Row* worst(const std::vector<Row>& rows, Filter filter, Badness badness) {
+  const Row* found = nullptr;
+  for (const Row& row : rows) {
+    if (filter(row) && (found == nullptr || badness(row) > badness(*found)))
+      found = &row;
+  }
+  return found;
+}
+
+std::string number(double value, int decimals) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string where(const SceneRow& row) {
+  return " (" + row.scene + ", " + row.topology + ")";
+}
+
+}  // namespace
+
+std::vector<TargetCheck> checkTargets(const std::vector<SceneRow>& scenes,
+                                      const std::vector<SyntheticRow>& synthetic) {
+  std::vector<TargetCheck> checks;
+  for (const SceneRow& row : scenes) {
+    if (row.topology != "complete")
+      continue;
+    const double limit =
+        row.scene == "Gedeck_Ende" ? kGedeckEndeCompleteMedianMs : kCompleteMedianMs;
+    checks.push_back({"complete " + row.scene + " median <= " + milliseconds(limit),
+                      milliseconds(row.recog_median_ms), row.recog_median_ms <= limit});
+  }
+  const auto is_star = [](const SceneRow& row) { return row.topology == "star"; };
+  const auto any = [](const auto&) { return true; };
+  if (const SceneRow* row =
+          worst(scenes, is_star, [](const SceneRow& r) { return r.recog_median_ms; })) {
+    checks.push_back({"star median <= " + milliseconds(kStarMedianMs) + " for every scene",
+                      "worst " + milliseconds(row->recog_median_ms) + where(*row),
+                      row->recog_median_ms <= kStarMedianMs});
+  }
+  if (const SceneRow* row = worst(scenes, any, [](const SceneRow& r) { return r.learn_ms; })) {
+    checks.push_back({"learning incl. storage <= " + milliseconds(kLearnMs) + " per scene",
+                      "worst " + milliseconds(row->learn_ms) + where(*row),
+                      row->learn_ms <= kLearnMs});
+  }
+  if (const SceneRow* row =
+          worst(scenes, any, [](const SceneRow& r) { return -r.recognised_fraction; })) {
+    checks.push_back({"recognised_fraction 1.0 for every scene and topology",
+                      "lowest " + number(row->recognised_fraction, 3) + where(*row),
+                      row->recognised_fraction >= 1.0});
+  }
+  const auto star_deviation = [](const SceneRow& r) {
+    const double n = static_cast<double>(r.objects);
+    return std::abs(r.missing_one_confidence - (n - 1.0) / n);
+  };
+  if (const SceneRow* row = worst(scenes, is_star, star_deviation)) {
+    checks.push_back({"star missing_one_confidence within 0.02 of (N-1)/N",
+                      "worst deviation " + number(star_deviation(*row), 4) + where(*row),
+                      star_deviation(*row) <= kMissingOneTolerance});
+  }
+  for (const auto& [objects, steps] : {std::pair<std::size_t, std::size_t>{10, 400}, {6, 1000}}) {
+    for (const SyntheticRow& row : synthetic) {
+      if (row.objects == objects && row.steps == steps) {
+        checks.push_back(
+            {"synthetic complete " + std::to_string(objects) + " objects x " +
+                 std::to_string(steps) + " steps median <= " + milliseconds(kSyntheticMedianMs),
+             milliseconds(row.recog_median_ms), row.recog_median_ms <= kSyntheticMedianMs});
+      }
+    }
+  }
+  if (!synthetic.empty()) {
+    const SyntheticRow* row =
+        worst(synthetic, any, [](const SyntheticRow& r) { return -r.recognised_fraction; });
+    checks.push_back({"synthetic recognised_fraction 1.0 for every size",
+                      "lowest " + number(row->recognised_fraction, 3) + " (" +
+                          std::to_string(row->objects) + " x " + std::to_string(row->steps) + ")",
+                      row->recognised_fraction >= 1.0});
+  }
+  return checks;
+}
+
+void printTargets(std::ostream& out, const std::vector<TargetCheck>& checks) {
+  if (checks.empty()) {
+    out << "Targets: none checked (nothing was measured)\n";
+    return;
+  }
+  out << "Targets\n";
+  std::size_t met = 0;
+  for (const TargetCheck& check : checks) {
+    out << (check.met ? "  met     " : "  MISSED  ") << check.target << ": " << check.measured
+        << "\n";
+    met += check.met ? 1 : 0;
+  }
+  out << "  " << met << " of " << checks.size() << " targets met\n";
+}
+
+}  // namespace asr_ism_tree::bench
