@@ -9,58 +9,20 @@
 #include <map>
 
 #include "asr_ism/input_error.hpp"
-#include "asr_ism/recordings.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
+#include "asr_ism/testing/input_error_of.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism::sqlite {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string recordings() {
-  return recordingsDirectory(ASR_RECORDINGS_DIR);
-}
-
-#define REQUIRE_RECORDINGS()                                                       \
-  if (recordings().empty())                                                        \
-  GTEST_SKIP() << "recordings not found (set ASR_RECORDINGS_DIR or place them at " \
-               << ASR_RECORDINGS_DIR << ")"
-
-// A fresh folder per test; bad files are built here, never in the recordings folder.
-class TempDir {
- public:
-  TempDir() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("asr_reader_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  // A writable copy of a recording.
-  std::string copyOf(const std::string& recording) const {
-    const std::string target = file(recording);
-    fs::copy_file(fs::path(recordings()) / recording, target);
-    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
-    return target;
-  }
-
- private:
-  fs::path path_;
-};
-
-// Runs `call` and returns the InputError's message; fails the test if none is thrown.
-template <typename Call>
-std::string inputErrorOf(Call call) {
-  try {
-    call();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return {};
-}
+using testing::inputErrorOf;
+using testing::recording;
+using testing::recordings;
+using testing::TempDir;
 
 TEST(DemonstrationReader, ListsTheScenesOfEachRecordingInIdOrder) {
   REQUIRE_RECORDINGS();
@@ -167,7 +129,7 @@ TEST(DemonstrationReader, PosesEqualTheRowsInIdOrder) {
 }
 
 TEST(DemonstrationReaderErrors, MissingFileIsNamed) {
-  TempDir dir;
+  TempDir dir("asr_reader");
   const std::string path = dir.file("absent.sqlite");
   EXPECT_NE(inputErrorOf([&] { readDemonstration(path, "gedeck"); }).find(path), std::string::npos);
   EXPECT_NE(inputErrorOf([&] { listRecordedScenes(path); }).find(path), std::string::npos);
@@ -175,7 +137,7 @@ TEST(DemonstrationReaderErrors, MissingFileIsNamed) {
 }
 
 TEST(DemonstrationReaderErrors, NonSqliteFileIsNamed) {
-  TempDir dir;
+  TempDir dir("asr_reader");
   const std::string path = dir.file("notes.sqlite");
   std::ofstream(path) << "this is a text file, not a database\n";
   const std::string message = inputErrorOf([&] { readDemonstration(path, "gedeck"); });
@@ -184,7 +146,7 @@ TEST(DemonstrationReaderErrors, NonSqliteFileIsNamed) {
 }
 
 TEST(DemonstrationReaderErrors, SqliteFileWithoutRecordedTablesIsNamed) {
-  TempDir dir;
+  TempDir dir("asr_reader");
   const std::string path = dir.file("other.sqlite");
   {
     Database db(path, Database::Mode::kReadWriteCreate);
@@ -225,8 +187,8 @@ std::int64_t changeFirstGedeckPose(const std::string& path, const std::string& a
 
 TEST(DemonstrationReaderErrors, NanPoseRowIsNamed) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_reader");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   const std::int64_t id = firstGedeckPoseId(path);
   {
     // SQLite keeps no NaN: binding one stores NULL, which is what a NaN recording leaves.
@@ -243,8 +205,8 @@ TEST(DemonstrationReaderErrors, NanPoseRowIsNamed) {
 
 TEST(DemonstrationReaderErrors, InfinitePoseRowIsNamed) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_reader");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   const std::int64_t id = changeFirstGedeckPose(path, "pz = 1e999");
   const std::string message = inputErrorOf([&] { readDemonstration(path, "gedeck"); });
   EXPECT_NE(message.find("recorded_poses id " + std::to_string(id)), std::string::npos) << message;
@@ -253,8 +215,8 @@ TEST(DemonstrationReaderErrors, InfinitePoseRowIsNamed) {
 
 TEST(DemonstrationReaderErrors, TextInAPoseColumnIsNamed) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_reader");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   // SQLite would silently read such text as 0.
   const std::int64_t id = changeFirstGedeckPose(path, "px = 'not a number'");
   const std::string message = inputErrorOf([&] { readDemonstration(path, "gedeck"); });
@@ -264,8 +226,8 @@ TEST(DemonstrationReaderErrors, TextInAPoseColumnIsNamed) {
 
 TEST(DemonstrationReaderErrors, ZeroQuaternionRowIsNamed) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_reader");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   const std::int64_t id = changeFirstGedeckPose(path, "qw = 0, qx = 0, qy = 0, qz = 0");
   const std::string message = inputErrorOf([&] { readDemonstration(path, "gedeck"); });
   EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -275,8 +237,8 @@ TEST(DemonstrationReaderErrors, ZeroQuaternionRowIsNamed) {
 
 TEST(DemonstrationReaderErrors, SceneWithoutSetsIsAnEmptyDemonstration) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_reader");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   {
     Database db(path, Database::Mode::kReadWriteCreate);
     db.execute("INSERT INTO recorded_patterns (name) VALUES ('Empty_Scene')");
@@ -291,8 +253,8 @@ TEST(DemonstrationReaderErrors, SceneWithoutSetsIsAnEmptyDemonstration) {
 
 TEST(DemonstrationReaderErrors, PoseOfAnUnknownObjectIsNamed) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_reader");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   const std::int64_t id = changeFirstGedeckPose(path, "objectId = 999999");
   const std::string message = inputErrorOf([&] { readDemonstration(path, "gedeck"); });
   EXPECT_NE(message.find("recorded_poses id " + std::to_string(id)), std::string::npos) << message;

@@ -1,128 +1,35 @@
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 
 #include <gtest/gtest.h>
-#include <sqlite3.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <map>
 #include <random>
 #include <set>
-#include <sstream>
 
 #include "asr_ism/input_error.hpp"
-#include "asr_ism/recordings.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
+#include "asr_ism/testing/input_error_of.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/sqlite_dump.hpp"
+#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism::sqlite {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string recordings() {
-  return recordingsDirectory(ASR_RECORDINGS_DIR);
-}
-
-#define REQUIRE_RECORDINGS()                                                       \
-  if (recordings().empty())                                                        \
-  GTEST_SKIP() << "recordings not found (set ASR_RECORDINGS_DIR or place them at " \
-               << ASR_RECORDINGS_DIR << ")"
-
-class TempDir {
- public:
-  TempDir() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("asr_writer_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  std::string copyOf(const std::string& recording) const {
-    const std::string target = file(recording);
-    fs::copy_file(fs::path(recordings()) / recording, target);
-    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
-    return target;
-  }
-
- private:
-  fs::path path_;
-};
-
-std::string fileBytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-}
-
-// One cell as text that tells types apart and keeps doubles bit for bit.
-std::string cellText(sqlite3_stmt* statement, int column) {
-  switch (sqlite3_column_type(statement, column)) {
-    case SQLITE_INTEGER:
-      return "i" + std::to_string(sqlite3_column_int64(statement, column));
-    case SQLITE_FLOAT: {
-      const double value = sqlite3_column_double(statement, column);
-      std::uint64_t bits;
-      std::memcpy(&bits, &value, sizeof bits);
-      return "r" + std::to_string(bits);
-    }
-    case SQLITE_TEXT:
-      return "t" +
-             std::string(reinterpret_cast<const char*>(sqlite3_column_text(statement, column)));
-    case SQLITE_BLOB:
-      return "b" + std::string(static_cast<const char*>(sqlite3_column_blob(statement, column)),
-                               sqlite3_column_bytes(statement, column));
-    default:
-      return "n";
-  }
-}
-
-std::vector<std::string> queryRows(sqlite3* db, const std::string& sql) {
-  sqlite3_stmt* statement = nullptr;
-  EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &statement, nullptr), SQLITE_OK) << sql;
-  std::vector<std::string> rows;
-  while (sqlite3_step(statement) == SQLITE_ROW) {
-    std::string row;
-    for (int column = 0; column < sqlite3_column_count(statement); ++column)
-      row += cellText(statement, column) + "\x1f";
-    rows.push_back(row);
-  }
-  sqlite3_finalize(statement);
-  return rows;
-}
-
-// Every table's rows (sorted, so the comparison does not depend on scan order) and the schema.
-struct Dump {
-  std::map<std::string, std::vector<std::string>> rows;
-  std::map<std::string, std::string> schema;  // sqlite_master: name -> sql
-};
-
-Dump dumpFile(const std::string& path) {
-  sqlite3* db = nullptr;
-  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
-  Dump dump;
-  for (const std::string& entry :
-       queryRows(db, "SELECT name, coalesce(sql, '') FROM sqlite_master")) {
-    const std::size_t separator = entry.find('\x1f');
-    dump.schema[entry.substr(1, separator - 1)] = entry.substr(separator + 1);
-  }
-  for (const std::string& entry :
-       queryRows(db, "SELECT name FROM sqlite_master WHERE type = 'table'")) {
-    const std::string table = entry.substr(1, entry.size() - 2);
-    auto rows = queryRows(db, "SELECT * FROM \"" + table + "\"");
-    std::sort(rows.begin(), rows.end());
-    dump.rows[table] = rows;
-  }
-  sqlite3_close(db);
-  return dump;
-}
+using testing::Dump;
+using testing::dumpFile;
+using testing::fileBytes;
+using testing::inputErrorOf;
+using testing::recording;
+using testing::TempDir;
 
 // Old rows are all still there (a changed row would be missing), and `added` rows are new.
 void expectRowsKept(const Dump& before, const Dump& after,
@@ -179,19 +86,8 @@ void expectSameDemonstration(const Demonstration& read, const Demonstration& wri
   }
 }
 
-template <typename Call>
-std::string inputErrorOf(Call call) {
-  try {
-    call();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return {};
-}
-
 TEST(DemonstrationWriter, RoundTripThroughANewFile) {
-  TempDir dir;
+  TempDir dir("asr_writer");
   const std::string path = dir.file("new.sqlite");
   const Demonstration written = syntheticDemonstration("Breakfast");
   appendDemonstration(path, written);
@@ -200,15 +96,15 @@ TEST(DemonstrationWriter, RoundTripThroughANewFile) {
 
 TEST(DemonstrationWriter, RoundTripOfARecording) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const Demonstration recorded = readDemonstration(recordings() + "/story_1.sqlite", "Spuelkorb_3");
+  TempDir dir("asr_writer");
+  const Demonstration recorded = readDemonstration(recording("story_1.sqlite"), "Spuelkorb_3");
   const std::string path = dir.file("copy.sqlite");
   appendDemonstration(path, recorded);
   expectSameDemonstration(readDemonstration(path, "Spuelkorb_3"), recorded);
 }
 
 TEST(DemonstrationWriter, NewFileGetsTheOriginalTablesOnly) {
-  TempDir dir;
+  TempDir dir("asr_writer");
   const std::string path = dir.file("new.sqlite");
   { DemonstrationWriter writer(path); }
   ASSERT_TRUE(fs::exists(path));
@@ -239,7 +135,7 @@ TEST(DemonstrationWriter, NewFileGetsTheOriginalTablesOnly) {
 }
 
 TEST(DemonstrationWriter, QuaternionsAreStoredWxyz) {
-  TempDir dir;
+  TempDir dir("asr_writer");
   const std::string path = dir.file("new.sqlite");
   const Eigen::Quaterniond orientation(0.5, -0.5, 0.5, 0.5);
   DemonstrationWriter(path).appendConfiguration(
@@ -253,7 +149,7 @@ TEST(DemonstrationWriter, QuaternionsAreStoredWxyz) {
 }
 
 TEST(DemonstrationWriter, ConfigurationsBecomeSetsInOrder) {
-  TempDir dir;
+  TempDir dir("asr_writer");
   const std::string path = dir.file("new.sqlite");
   const Demonstration source = syntheticDemonstration("Breakfast");
   DemonstrationWriter writer(path);
@@ -270,8 +166,8 @@ TEST(DemonstrationWriter, ConfigurationsBecomeSetsInOrder) {
 
 TEST(DemonstrationWriter, AppendingToARecordingKeepsEveryRow) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_2.sqlite");
+  TempDir dir("asr_writer");
+  const std::string path = dir.copyOf(recording("story_2.sqlite"));
   const Dump before = dumpFile(path);
   const Demonstration gedeck_before = readDemonstration(path, "gedeck");
 
@@ -316,8 +212,8 @@ TEST(DemonstrationWriter, AppendingToARecordingKeepsEveryRow) {
 
 TEST(DemonstrationWriter, ObjectsAreReusedByTypeAndObservedId) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_2.sqlite");
+  TempDir dir("asr_writer");
+  const std::string path = dir.copyOf(recording("story_2.sqlite"));
   const Dump before = dumpFile(path);
   Demonstration gedeck = readDemonstration(path, "gedeck");
   // Absent objects are fine: only three of the eight are in this step.
@@ -339,7 +235,7 @@ TEST(DemonstrationWriter, ObjectsAreReusedByTypeAndObservedId) {
 }
 
 TEST(DemonstrationWriter, StepsWithoutObjectsAreSkipped) {
-  TempDir dir;
+  TempDir dir("asr_writer");
   const std::string path = dir.file("new.sqlite");
   Demonstration demonstration = syntheticDemonstration("Breakfast");
   const std::size_t empty_step = demonstration.addStep();
@@ -357,8 +253,8 @@ TEST(DemonstrationWriter, StepsWithoutObjectsAreSkipped) {
 
 TEST(DemonstrationWriter, InvalidConfigurationsWriteNothing) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_2.sqlite");
+  TempDir dir("asr_writer");
+  const std::string path = dir.copyOf(recording("story_2.sqlite"));
   const std::string bytes = fileBytes(path);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Pose good(Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Quaterniond::Identity());
@@ -416,7 +312,7 @@ TEST(DemonstrationWriter, InvalidConfigurationsWriteNothing) {
 }
 
 TEST(DemonstrationWriter, RefusesFilesThatDoNotFit) {
-  TempDir dir;
+  TempDir dir("asr_writer");
   const std::string text_file = dir.file("notes.sqlite");
   std::ofstream(text_file) << "not a database\n";
   const std::string text_bytes = fileBytes(text_file);

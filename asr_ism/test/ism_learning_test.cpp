@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/testing/input_error_of.hpp"
 
 namespace asr_ism {
 namespace {
@@ -14,17 +14,7 @@ Pose makePose(double x, double y, double z, double angle, const Eigen::Vector3d&
   return Pose(Eigen::Vector3d(x, y, z), Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)));
 }
 
-// The message of the InputError `call` throws; fails the test if it throws none.
-template <typename Call>
-std::string inputErrorOf(Call call) {
-  try {
-    call();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
+using testing::inputErrorOf;
 
 const ObjectKey kReference{"Plate", "1"};
 const ObjectKey kCup{"Cup", "7"};

@@ -2,20 +2,20 @@
 
 #include <gtest/gtest.h>
 #include <sqlite3.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 
 #include "asr_ism/input_error.hpp"
-#include "asr_ism/recordings.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
+#include "asr_ism/testing/input_error_of.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/sqlite_dump.hpp"
+#include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -28,56 +28,13 @@ using asr_ism::Demonstration;
 using asr_ism::InputError;
 using asr_ism::sqlite::Database;
 using asr_ism::sqlite::Statement;
-
-std::string recordings() {
-  return asr_ism::recordingsDirectory(ASR_RECORDINGS_DIR);
-}
-
-#define REQUIRE_RECORDINGS()                                                       \
-  if (recordings().empty())                                                        \
-  GTEST_SKIP() << "recordings not found (set ASR_RECORDINGS_DIR or place them at " \
-               << ASR_RECORDINGS_DIR << ")"
-
-class TempDir {
- public:
-  TempDir() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("asr_model_store_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add);
-    fs::remove_all(path_);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  std::string copyOf(const std::string& recording) const {
-    const std::string target = file(recording);
-    fs::copy_file(fs::path(recordings()) / recording, target);
-    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write);
-    return target;
-  }
-
- private:
-  fs::path path_;
-};
-
-std::string fileBytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-}
-
-template <typename Call>
-std::string inputErrorOf(Call call) {
-  try {
-    call();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return {};
-}
+using asr_ism::testing::Dump;
+using asr_ism::testing::dumpFile;
+using asr_ism::testing::fileBytes;
+using asr_ism::testing::inputErrorOf;
+using asr_ism::testing::queryRows;
+using asr_ism::testing::recording;
+using asr_ism::testing::TempDir;
 
 // ---- bit-exact comparisons ----
 
@@ -158,68 +115,6 @@ void expectSameInstances(const std::vector<SceneInstance>& a, const std::vector<
   }
 }
 
-// ---- whole-file dumps ----
-
-std::string cellText(sqlite3_stmt* statement, int column) {
-  switch (sqlite3_column_type(statement, column)) {
-    case SQLITE_INTEGER:
-      return "i" + std::to_string(sqlite3_column_int64(statement, column));
-    case SQLITE_FLOAT: {
-      const double value = sqlite3_column_double(statement, column);
-      std::uint64_t bits;
-      std::memcpy(&bits, &value, sizeof bits);
-      return "r" + std::to_string(bits);
-    }
-    case SQLITE_TEXT:
-      return "t" +
-             std::string(reinterpret_cast<const char*>(sqlite3_column_text(statement, column)));
-    case SQLITE_BLOB:
-      return "b" + std::string(static_cast<const char*>(sqlite3_column_blob(statement, column)),
-                               sqlite3_column_bytes(statement, column));
-    default:
-      return "n";
-  }
-}
-
-std::vector<std::string> queryRows(sqlite3* db, const std::string& sql) {
-  sqlite3_stmt* statement = nullptr;
-  EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &statement, nullptr), SQLITE_OK) << sql;
-  std::vector<std::string> rows;
-  while (sqlite3_step(statement) == SQLITE_ROW) {
-    std::string row;
-    for (int column = 0; column < sqlite3_column_count(statement); ++column)
-      row += cellText(statement, column) + "\x1f";
-    rows.push_back(row);
-  }
-  sqlite3_finalize(statement);
-  return rows;
-}
-
-struct Dump {
-  std::map<std::string, std::vector<std::string>> rows;  // per table, sorted
-  std::map<std::string, std::string> schema;             // sqlite_master: name -> sql
-};
-
-Dump dumpFile(const std::string& path) {
-  sqlite3* db = nullptr;
-  EXPECT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
-  Dump dump;
-  for (const std::string& entry :
-       queryRows(db, "SELECT name, coalesce(sql, '') FROM sqlite_master")) {
-    const std::size_t separator = entry.find('\x1f');
-    dump.schema[entry.substr(1, separator - 1)] = entry.substr(separator + 1);
-  }
-  for (const std::string& entry :
-       queryRows(db, "SELECT name FROM sqlite_master WHERE type = 'table'")) {
-    const std::string table = entry.substr(1, entry.size() - 2);
-    auto rows = queryRows(db, "SELECT * FROM \"" + table + "\"");
-    std::sort(rows.begin(), rows.end());
-    dump.rows[table] = rows;
-  }
-  sqlite3_close(db);
-  return dump;
-}
-
 // The rows of one stored tree in the suite's per-tree tables.
 std::map<std::string, std::vector<std::string>> treeRows(const std::string& path,
                                                          std::int64_t tree_id) {
@@ -247,7 +142,7 @@ const Learned& starGedeck() {
   static const Learned learned = [] {
     Learned result;
     result.demonstration =
-        asr_ism::sqlite::readDemonstration(recordings() + "/story_1.sqlite", "gedeck");
+        asr_ism::sqlite::readDemonstration(recording("story_1.sqlite"), "gedeck");
     const auto& objects = result.demonstration.objects();
     result.tree = generateIsmTree(
         result.demonstration,
@@ -272,7 +167,7 @@ const Learned& completeOffice() {
   static const Learned learned = [] {
     Learned result;
     result.demonstration =
-        asr_ism::sqlite::readDemonstration(recordings() + "/office2016.sqlite", "office2016");
+        asr_ism::sqlite::readDemonstration(recording("office2016.sqlite"), "office2016");
     result.tree = generateIsmTree(result.demonstration,
                                   RelationTopology::complete(result.demonstration.objects()), {});
     return result;
@@ -300,7 +195,7 @@ std::vector<asr_ism::Configuration> testConfigurations(const Demonstration& demo
 }
 
 void expectLoadedTreeBehavesAsLearned(const Learned& learned, bool recognise) {
-  TempDir dir;
+  TempDir dir("asr_model_store");
   const std::string path = dir.file("model.sqlite");
   saveIsmTree(path, learned.tree, "test");
   const IsmTree loaded = loadIsmTree(path, learned.tree.scene);
@@ -338,8 +233,8 @@ TEST(ModelStore, CompleteTreeRecognisesAlikeAfterLoading) {
 
 TEST(ModelStore, SavingIntoARecordingKeepsEveryTable) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_model_store");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   const Dump before = dumpFile(path);
   ASSERT_TRUE(before.rows.count("model_votes"));
   ASSERT_GT(before.rows.at("model_votes").size(), 0u);
@@ -374,7 +269,7 @@ std::size_t rowCount(const std::string& path, const std::string& table) {
 
 TEST(ModelStore, SavingASceneAgainReplacesOnlyThatScene) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
+  TempDir dir("asr_model_store");
   const std::string path = dir.file("models.sqlite");
   saveIsmTree(path, starGedeck().tree, "first");
   saveIsmTree(path, completeOffice().tree, "second");
@@ -406,9 +301,9 @@ TEST(ModelStore, SavingASceneAgainReplacesOnlyThatScene) {
 
 TEST(ModelStore, ListModelScenes) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string recording = dir.copyOf("story_1.sqlite");
-  EXPECT_TRUE(listModelScenes(recording).empty()) << "model_* tables are not this suite's models";
+  TempDir dir("asr_model_store");
+  const std::string copy = dir.copyOf(recording("story_1.sqlite"));
+  EXPECT_TRUE(listModelScenes(copy).empty()) << "model_* tables are not this suite's models";
   const std::string path = dir.file("models.sqlite");
   saveIsmTree(path, completeOffice().tree, "test");
   EXPECT_EQ(listModelScenes(path), (std::vector<std::string>{"office2016"}));
@@ -418,7 +313,7 @@ TEST(ModelStore, ListModelScenes) {
 
 TEST(ModelStore, NewerSchemaVersionIsRefusedAndLeftUnchanged) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
+  TempDir dir("asr_model_store");
   const std::string path = dir.file("models.sqlite");
   saveIsmTree(path, completeOffice().tree, "test");
   {
@@ -437,7 +332,7 @@ TEST(ModelStore, NewerSchemaVersionIsRefusedAndLeftUnchanged) {
 
 TEST(ModelStore, NonSqliteFileIsRefusedAndLeftByteIdentical) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
+  TempDir dir("asr_model_store");
   const std::string path = dir.file("notes.sqlite");
   std::ofstream(path) << "my notes, not a database\n";
   const std::string bytes = fileBytes(path);
@@ -451,7 +346,7 @@ TEST(ModelStore, NonSqliteFileIsRefusedAndLeftByteIdentical) {
 
 TEST(ModelStore, InvalidTreeWritesNothing) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
+  TempDir dir("asr_model_store");
   IsmTree broken = completeGedeck().tree;
   ASSERT_GT(broken.isms.size(), 1u);
   broken.parent[1] = static_cast<int>(broken.isms.size()) + 5;  // a child link to nowhere
@@ -469,8 +364,8 @@ TEST(ModelStore, InvalidTreeWritesNothing) {
 
 TEST(ModelStore, FailureMidwayLeavesTheFileUnchanged) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_model_store");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   saveIsmTree(path, starGedeck().tree, "first");
   {
     // Makes the replacing save fail after it has removed the old model and written part of the
@@ -494,8 +389,8 @@ TEST(ModelStore, ReadOnlyFileIsLeftUnchanged) {
   REQUIRE_RECORDINGS();
   if (::geteuid() == 0)
     GTEST_SKIP() << "running as root: file permissions do not stop writes";
-  TempDir dir;
-  const std::string path = dir.copyOf("story_1.sqlite");
+  TempDir dir("asr_model_store");
+  const std::string path = dir.copyOf(recording("story_1.sqlite"));
   fs::permissions(path, fs::perms::owner_read);
   const std::string bytes = fileBytes(path);
   EXPECT_THROW(saveIsmTree(path, starGedeck().tree, "test"), InputError);
@@ -503,7 +398,7 @@ TEST(ModelStore, ReadOnlyFileIsLeftUnchanged) {
 }
 
 TEST(ModelStoreErrors, MissingFileIsNamed) {
-  TempDir dir;
+  TempDir dir("asr_model_store");
   const std::string path = dir.file("absent.sqlite");
   EXPECT_NE(inputErrorOf([&] { loadIsmTree(path, "gedeck"); }).find(path), std::string::npos);
   EXPECT_NE(inputErrorOf([&] { listModelScenes(path); }).find(path), std::string::npos);
@@ -512,7 +407,7 @@ TEST(ModelStoreErrors, MissingFileIsNamed) {
 
 TEST(ModelStoreErrors, FileWithoutModelsIsNamed) {
   REQUIRE_RECORDINGS();
-  const std::string path = recordings() + "/story_1.sqlite";
+  const std::string path = recording("story_1.sqlite");
   const std::string message = inputErrorOf([&] { loadIsmTree(path, "gedeck"); });
   EXPECT_NE(message.find(path), std::string::npos) << message;
   EXPECT_NE(message.find("no ISM tree model"), std::string::npos) << message;
@@ -520,7 +415,7 @@ TEST(ModelStoreErrors, FileWithoutModelsIsNamed) {
 
 TEST(ModelStoreErrors, UnknownSceneListsTheKnownOnes) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
+  TempDir dir("asr_model_store");
   const std::string path = dir.file("models.sqlite");
   saveIsmTree(path, completeOffice().tree, "test");
   saveIsmTree(path, starGedeck().tree, "test");
@@ -532,7 +427,7 @@ TEST(ModelStoreErrors, UnknownSceneListsTheKnownOnes) {
 
 TEST(ModelStoreErrors, InconsistentModelIsNamed) {
   REQUIRE_RECORDINGS();
-  TempDir dir;
+  TempDir dir("asr_model_store");
   const std::string path = dir.file("models.sqlite");
   saveIsmTree(path, completeGedeck().tree, "test");
   {

@@ -8,8 +8,8 @@
 #include <ostream>
 #include <string>
 
-#include "asr_ism/recordings.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -22,14 +22,7 @@ using asr_ism::Pose;
 
 constexpr double kAccepted = 0.99;
 
-std::string recordings() {
-  return asr_ism::recordingsDirectory(ASR_RECORDINGS_DIR);
-}
-
-#define SKIP_WITHOUT_RECORDINGS()                                  \
-  if (recordings().empty())                                        \
-  GTEST_SKIP() << "recordings not found at " << ASR_RECORDINGS_DIR \
-               << " (set ASR_RECORDINGS_DIR to the folder of story_1.sqlite etc.)"
+using asr_ism::testing::recording;
 
 struct KitchenSceneInfo {
   const char* file;
@@ -67,7 +60,7 @@ const LearnedScene& learned(const std::string& file, const std::string& scene) {
   std::unique_ptr<LearnedScene>& entry = cache[file + "/" + scene];
   if (!entry) {
     entry = std::make_unique<LearnedScene>();
-    entry->demonstration = asr_ism::sqlite::readDemonstration(recordings() + "/" + file, scene);
+    entry->demonstration = asr_ism::sqlite::readDemonstration(recording(file), scene);
     const auto& objects = entry->demonstration.objects();
     entry->star_center = chooseStarCenter(entry->demonstration);
     entry->star = generateIsmTree(entry->demonstration,
@@ -96,7 +89,7 @@ const char* topologyName(bool complete_topology) {
 
 class KitchenScene : public ::testing::TestWithParam<KitchenSceneInfo> {
  protected:
-  void SetUp() override { SKIP_WITHOUT_RECORDINGS(); }
+  void SetUp() override { REQUIRE_RECORDINGS(); }
   const LearnedScene& scene() const { return learned(GetParam().file, GetParam().scene); }
 };
 
@@ -189,7 +182,7 @@ INSTANTIATE_TEST_SUITE_P(Recordings, KitchenScene, ::testing::ValuesIn(kKitchenS
 // bottle alone, moved away from the others, scores 2 of 4, exactly as much as the cup and the
 // juice together. Which of the two tied instances comes first is left to bin order.
 TEST(Recordings, LoneObjectInTwoLeavesTiesWithTheOtherTwo) {
-  SKIP_WITHOUT_RECORDINGS();
+  REQUIRE_RECORDINGS();
   const LearnedScene& s = learned("story_2.sqlite", "Getraenke_Gedeck");
   ASSERT_EQ(s.complete.leafCount(), 4u);
   Configuration configuration = s.demonstration.configuration(5);
@@ -225,7 +218,7 @@ TEST(Recordings, LoneObjectInTwoLeavesTiesWithTheOtherTwo) {
 // configuration, the complete tree rejects it. Cases found by a search over all scenes, objects
 // and pairs of time steps (a throwaway program, not part of the repository).
 TEST(Recordings, StarTreeAcceptsWhatTheCompleteTreeRejects) {
-  SKIP_WITHOUT_RECORDINGS();
+  REQUIRE_RECORDINGS();
   struct Case {
     const char* file;
     const char* scene;

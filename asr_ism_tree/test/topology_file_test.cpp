@@ -1,66 +1,21 @@
 #include "asr_ism_tree/topology_file.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/recordings.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism/testing/input_error_of.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
 namespace fs = std::filesystem;
-using asr_ism::InputError;
-
-class TempDir {
- public:
-  TempDir() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("asr_topology_" + std::string(test->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    const std::string path = file(name);
-    std::ofstream(path) << text;
-    return path;
-  }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(path_))
-      names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  fs::path path_;
-};
-
-std::string fileText(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-}
-
-template <typename Call>
-std::string inputErrorOf(Call call) {
-  try {
-    call();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return {};
-}
+using asr_ism::testing::fileBytes;
+using asr_ism::testing::inputErrorOf;
+using asr_ism::testing::TempDir;
 
 // Two instances of one type, an object without id and a unique type with an id.
 const std::vector<ObjectKey> kObjects = {
@@ -76,7 +31,7 @@ RelationTopology sampleTopology() {
 }
 
 TEST(TopologyFile, RoundTrip) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.file("topology.txt");
   const RelationTopology written = sampleTopology();
   writeTopologyFile(path, written);
@@ -85,13 +40,11 @@ TEST(TopologyFile, RoundTrip) {
 }
 
 TEST(TopologyFile, RoundTripOfStarAndCompleteOnARecording) {
-  const std::string recordings = asr_ism::recordingsDirectory(ASR_RECORDINGS_DIR);
-  if (recordings.empty())
-    GTEST_SKIP() << "recordings not found (set ASR_RECORDINGS_DIR or place them at "
-                 << ASR_RECORDINGS_DIR << ")";
-  const auto objects =
-      asr_ism::sqlite::readDemonstration(recordings + "/story_1.sqlite", "Spuelkorb_3").objects();
-  TempDir dir;
+  REQUIRE_RECORDINGS();
+  const auto objects = asr_ism::sqlite::readDemonstration(
+                           asr_ism::testing::recording("story_1.sqlite"), "Spuelkorb_3")
+                           .objects();
+  TempDir dir("asr_topology");
   const std::string path = dir.file("topology.txt");
   for (const RelationTopology& topology :
        {RelationTopology::star(objects, 2), RelationTopology::complete(objects)}) {
@@ -101,10 +54,10 @@ TEST(TopologyFile, RoundTripOfStarAndCompleteOnARecording) {
 }
 
 TEST(TopologyFile, WriterUsesTypeAndIdAndAHeader) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.file("topology.txt");
   writeTopologyFile(path, sampleTopology());
-  const std::string text = fileText(path);
+  const std::string text = fileBytes(path);
   EXPECT_EQ(text.front(), '#') << "the file starts with a header comment";
   // Relations in index order; a plain type only where the id is empty.
   EXPECT_NE(text.find("\nCup PlateDeep:018054024100\n"), std::string::npos) << text;
@@ -115,7 +68,7 @@ TEST(TopologyFile, WriterUsesTypeAndIdAndAHeader) {
 }
 
 TEST(TopologyFile, ReaderAcceptsUniqueTypesCommentsAndBlankLines) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.write("topology.txt",
                                      "# hand-written\n"
                                      "\n"
@@ -129,7 +82,7 @@ TEST(TopologyFile, ReaderAcceptsUniqueTypesCommentsAndBlankLines) {
 }
 
 TEST(TopologyFile, FileWithoutTrailingNewline) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.write("topology.txt",
                                      "Cup marker_1\nmarker_1 PlateDeep:054042013100\n"
                                      "PlateDeep:054042013100 PlateDeep:018054024100");
@@ -137,7 +90,7 @@ TEST(TopologyFile, FileWithoutTrailingNewline) {
 }
 
 TEST(TopologyFile, SingleObjectNeedsNoRelation) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::vector<ObjectKey> single = {{"Cup", "1"}};
   const std::string path = dir.file("topology.txt");
   writeTopologyFile(path, RelationTopology(single));
@@ -148,7 +101,7 @@ TEST(TopologyFile, SingleObjectNeedsNoRelation) {
 
 void expectReadError(const std::string& text, const std::string& line_reference,
                      const std::string& detail) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.write("topology.txt", text);
   const std::string message = inputErrorOf([&] { readTopologyFile(path, kObjects); });
   EXPECT_NE(message.find(path + line_reference), std::string::npos) << message;
@@ -156,7 +109,7 @@ void expectReadError(const std::string& text, const std::string& line_reference,
 }
 
 TEST(TopologyFileErrors, MissingFile) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.file("absent.txt");
   const std::string message = inputErrorOf([&] { readTopologyFile(path, kObjects); });
   EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -164,7 +117,7 @@ TEST(TopologyFileErrors, MissingFile) {
 }
 
 TEST(TopologyFileErrors, FolderInsteadOfFile) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string message = inputErrorOf([&] { readTopologyFile(dir.file(""), kObjects); });
   EXPECT_NE(message.find(dir.file("")), std::string::npos) << message;
 }
@@ -192,7 +145,7 @@ TEST(TopologyFileErrors, RelationOfAnObjectWithItself) {
 }
 
 TEST(TopologyFileErrors, DisconnectedTopology) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path =
       dir.write("topology.txt", "Cup marker_1\nPlateDeep:018054024100 PlateDeep:054042013100\n");
   const std::string message = inputErrorOf([&] { readTopologyFile(path, kObjects); });
@@ -209,19 +162,19 @@ TEST(TopologyFileErrors, DisconnectedTopology) {
 // ---- writing: atomic, never half a file ----
 
 TEST(TopologyFile, OverwritingReplacesTheWholeFile) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.write("topology.txt", std::string(10000, 'x') + "\n");
   writeTopologyFile(path, sampleTopology());
   EXPECT_EQ(readTopologyFile(path, kObjects), sampleTopology());
-  EXPECT_EQ(fileText(path).find('x'), std::string::npos);
+  EXPECT_EQ(fileBytes(path).find('x'), std::string::npos);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"topology.txt"});
 }
 
 TEST(TopologyFile, RefusedWritesLeaveTheOldFile) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.file("topology.txt");
   writeTopologyFile(path, sampleTopology());
-  const std::string before = fileText(path);
+  const std::string before = fileBytes(path);
 
   RelationTopology disconnected(kObjects);
   disconnected.addRelation(0, 1);
@@ -239,12 +192,12 @@ TEST(TopologyFile, RefusedWritesLeaveTheOldFile) {
   message = inputErrorOf([&] { writeTopologyFile(path, RelationTopology::complete(alike)); });
   EXPECT_NE(message.find("'a:b'"), std::string::npos) << message;
 
-  EXPECT_EQ(fileText(path), before);
+  EXPECT_EQ(fileBytes(path), before);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"topology.txt"});
 }
 
 TEST(TopologyFile, UnwritableFolderIsNamedAndNothingIsCreated) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.file("missing_folder/topology.txt");
   const std::string message = inputErrorOf([&] { writeTopologyFile(path, sampleTopology()); });
   EXPECT_NE(message.find(path), std::string::npos) << message;
@@ -252,7 +205,7 @@ TEST(TopologyFile, UnwritableFolderIsNamedAndNothingIsCreated) {
 }
 
 TEST(TopologyFile, TargetThatCannotBeReplacedKeepsItsContent) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   // A non-empty folder under the target name: rename fails after the temporary file is written.
   const std::string path = dir.file("topology.txt");
   fs::create_directories(path + "/inside");
@@ -263,7 +216,7 @@ TEST(TopologyFile, TargetThatCannotBeReplacedKeepsItsContent) {
 }
 
 TEST(TopologyFile, ExistingFileKeepsItsPermissions) {
-  TempDir dir;
+  TempDir dir("asr_topology");
   const std::string path = dir.write("topology.txt", "old\n");
   fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   writeTopologyFile(path, sampleTopology());
