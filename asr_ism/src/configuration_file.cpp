@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <sys/stat.h>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -55,22 +56,36 @@ ObjectEstimate readObject(const YAML::Node& node, const std::string& what) {
   const YAML::Node pose = mapField(node, "pose", named);
   const YAML::Node position = mapField(pose, "position", named + " pose");
   const YAML::Node orientation = mapField(pose, "orientation", named + " pose");
-  estimate.pose =
-      validatedPose(Eigen::Vector3d(numberField(position, "x", named + " position"),
-                                    numberField(position, "y", named + " position"),
-                                    numberField(position, "z", named + " position")),
-                    Eigen::Quaterniond(numberField(orientation, "w", named + " orientation"),
-                                       numberField(orientation, "x", named + " orientation"),
-                                       numberField(orientation, "y", named + " orientation"),
-                                       numberField(orientation, "z", named + " orientation")),
-                    named);
+  const Eigen::Quaterniond quaternion(numberField(orientation, "w", named + " orientation"),
+                                      numberField(orientation, "x", named + " orientation"),
+                                      numberField(orientation, "y", named + " orientation"),
+                                      numberField(orientation, "z", named + " orientation"));
+  estimate.pose = validatedPose(Eigen::Vector3d(numberField(position, "x", named + " position"),
+                                                numberField(position, "y", named + " position"),
+                                                numberField(position, "z", named + " position")),
+                                quaternion, named);
+  // Normalising a quaternion that is unit up to rounding changes its last bits (for about a
+  // third of them); one that is already canonical, as writeConfigurationFile writes them, is
+  // kept bit for bit so that a write -> read round trip is exact.
+  if (quaternion.w() >= 0.0 &&
+      std::abs(quaternion.squaredNorm() - 1.0) <= 8.0 * std::numeric_limits<double>::epsilon()) {
+    estimate.pose.orientation = quaternion;
+  }
   return estimate;
 }
 
-// YAML double-quoted scalar, so any type or id text survives the round trip.
+// YAML double-quoted scalar, so any type or id text survives the round trip. Control characters
+// are escaped: a line break written as it is would be read back as a space.
 std::string quoted(const std::string& text) {
   std::string result = "\"";
   for (char c : text) {
+    const auto code = static_cast<unsigned char>(c);
+    if (code < 0x20 || code == 0x7f) {
+      char escape[5];
+      std::snprintf(escape, sizeof escape, "\\x%02x", code);
+      result += escape;
+      continue;
+    }
     if (c == '"' || c == '\\')
       result += '\\';
     result += c;
@@ -90,6 +105,9 @@ Configuration readConfigurationFile(const std::string& path) {
   } catch (const YAML::ParserException& error) {
     throw InputError(path + ": malformed YAML/JSON at line " + std::to_string(error.mark.line + 1) +
                      ": " + error.msg);
+  } catch (const std::ios_base::failure& error) {
+    // E.g. a folder: it opens, but reading it fails.
+    throw InputError(path + ": cannot read the objects file (" + error.what() + ")");
   }
   if (!root.IsMap() || !root["objects"]) {
     throw InputError(path + ": expected a mapping with a list 'objects'");
@@ -112,7 +130,8 @@ void writeConfigurationFile(const std::string& path, const Configuration& config
   }
   std::ostringstream text;
   text << std::setprecision(std::numeric_limits<double>::max_digits10);
-  text << "objects:\n";
+  // An empty list must be written as one: a bare "objects:" would read back as null.
+  text << (configuration.empty() ? "objects: []\n" : "objects:\n");
   for (const ObjectEstimate& estimate : configuration) {
     const Pose& pose = estimate.pose;
     text << "  - type: " << quoted(estimate.key.type) << "\n"
@@ -124,13 +143,15 @@ void writeConfigurationFile(const std::string& path, const Configuration& config
          << ", z: " << pose.orientation.z() << ", w: " << pose.orientation.w() << "}\n";
   }
   const std::string temporary = path + ".tmp";
+  bool written = false;
   {
     std::ofstream file(temporary, std::ios::trunc);
     file << text.str();
-    if (!file.flush())
-      throw InputError(temporary + ": cannot write");
+    file.close();
+    written = !file.fail();
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+  // A failed write (e.g. a full disk) must not leave its partial temporary file behind either.
+  if (!written || std::rename(temporary.c_str(), path.c_str()) != 0) {
     std::remove(temporary.c_str());
     throw InputError(path + ": cannot write");
   }
