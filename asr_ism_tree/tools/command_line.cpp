@@ -1,5 +1,6 @@
 #include "command_line.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -55,8 +56,9 @@ long long CommandLine::integer(const std::string& name, long long fallback) cons
   if (found == values_.end())
     return fallback;
   char* end = nullptr;
+  errno = 0;
   const long long value = std::strtoll(found->second.c_str(), &end, 10);
-  if (found->second.empty() || *end != '\0' || value < 0) {
+  if (found->second.empty() || *end != '\0' || value < 0 || errno == ERANGE) {
     throw UsageError{"option --" + name + " needs a non-negative integer, not '" + found->second +
                      "'"};
   }
