@@ -1,0 +1,556 @@
+// End-to-end tests of the built `ism` tool (ISM_TOOL): learn, info and recognize as a user runs
+// them, on the real recordings and on small files written here; exit codes, stdout and stderr.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asr_ism/configuration_file.hpp"
+#include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism/sqlite/demonstration_writer.hpp"
+#include "asr_ism/sqlite/sqlite_database.hpp"
+#include "asr_ism/synthetic_demonstration.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/temp_dir.hpp"
+#include "asr_ism_tree/sqlite/model_store.hpp"
+
+#ifndef ISM_TOOL
+#error "ISM_TOOL must be the path of the built ism executable (see asr_ism_tree/CMakeLists.txt)"
+#endif
+
+namespace asr_ism_tree {
+namespace {
+
+using asr_ism::testing::fileBytes;
+using asr_ism::testing::recording;
+using asr_ism::testing::TempDir;
+using nlohmann::json;
+
+constexpr char kPrefix[] = "asr_ism_tool";
+
+// ---- running the tool ----
+
+struct ToolRun {
+  int exit_code = -1;
+  std::string out;
+  std::vector<std::string> err;  // stderr, line by line
+};
+
+std::string shellQuoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text)
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream stream(text);
+  for (std::string line; std::getline(stream, line);)
+    result.push_back(line);
+  return result;
+}
+
+// Runs `ism arguments...` with no standard input; stdout and stderr go through files in `dir`.
+ToolRun runIsm(const TempDir& dir, const std::vector<std::string>& arguments) {
+  std::string command = shellQuoted(ISM_TOOL);
+  for (const std::string& argument : arguments)
+    command += " " + shellQuoted(argument);
+  const std::string out = dir.file("ism.stdout");
+  const std::string err = dir.file("ism.stderr");
+  command += " < /dev/null > " + shellQuoted(out) + " 2> " + shellQuoted(err);
+  const int status = std::system(command.c_str());
+  ToolRun run;
+  EXPECT_TRUE(status != -1 && WIFEXITED(status)) << command << " did not exit normally";
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = fileBytes(out);
+  run.err = lines(fileBytes(err));
+  return run;
+}
+
+std::string describe(const ToolRun& run) {
+  std::string text =
+      "exit code " + std::to_string(run.exit_code) + "\nstdout:\n" + run.out + "stderr:\n";
+  for (const std::string& line : run.err)
+    text += line + "\n";
+  return text;
+}
+
+void expectSuccess(const ToolRun& run) {
+  EXPECT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_TRUE(run.err.empty()) << describe(run);
+}
+
+// Bad input: exit code 1, nothing on stdout, exactly one line on stderr that names every one of
+// `named` (the offending file, scene, object...).
+void expectInputError(const ToolRun& run, const std::vector<std::string>& named) {
+  EXPECT_EQ(run.exit_code, 1) << describe(run);
+  EXPECT_TRUE(run.out.empty()) << describe(run);
+  ASSERT_EQ(run.err.size(), 1u) << describe(run);
+  EXPECT_EQ(run.err[0].rfind("ism ", 0), 0u) << run.err[0];
+  for (const std::string& name : named)
+    EXPECT_NE(run.err[0].find(name), std::string::npos) << "'" << name << "' in: " << run.err[0];
+}
+
+// A usage error: exit code 2, one line naming `named`, then the usage text and nothing else.
+void expectUsageError(const ToolRun& run, const std::string& named) {
+  EXPECT_EQ(run.exit_code, 2) << describe(run);
+  EXPECT_TRUE(run.out.empty()) << describe(run);
+  ASSERT_GE(run.err.size(), 2u) << describe(run);
+  EXPECT_NE(run.err[0].find(named), std::string::npos) << run.err[0];
+  EXPECT_EQ(run.err[1].rfind("usage: ism", 0), 0u) << describe(run);
+  for (std::size_t i = 2; i < run.err.size(); ++i) {
+    EXPECT_TRUE(run.err[i].rfind("commands:", 0) == 0 || run.err[i].rfind("  ", 0) == 0)
+        << "not a usage line: " << run.err[i];
+  }
+}
+
+// ---- JSON output ----
+
+std::set<std::string> keysOf(const json& object) {
+  std::set<std::string> keys;
+  for (const auto& item : object.items())
+    keys.insert(item.key());
+  return keys;
+}
+
+// Parses `recognize --json` output and checks its shape: exactly the documented keys, every
+// number a number, instances sorted by confidence (best first).
+json parseRecognition(const ToolRun& run, const std::string& scene) {
+  json output;
+  try {
+    output = json::parse(run.out);
+  } catch (const json::parse_error& error) {
+    ADD_FAILURE() << "not JSON (" << error.what() << "):\n" << run.out;
+    return json();
+  }
+  using Keys = std::set<std::string>;
+  EXPECT_EQ(keysOf(output), (Keys{"scene", "runtime_ms", "instances"}));
+  EXPECT_EQ(output.value("scene", ""), scene);
+  EXPECT_TRUE(output["runtime_ms"].is_number());
+  EXPECT_TRUE(output["instances"].is_array());
+  double previous = 2.0;
+  for (const json& instance : output["instances"]) {
+    EXPECT_EQ(keysOf(instance), (Keys{"confidence", "pose", "objects", "missing", "isms"}));
+    EXPECT_TRUE(instance["confidence"].is_number());
+    const double confidence = instance["confidence"].get<double>();
+    EXPECT_LE(confidence, previous) << "instances are sorted by confidence, best first";
+    previous = confidence;
+    EXPECT_EQ(keysOf(instance["pose"]), (Keys{"position", "orientation"}));
+    EXPECT_EQ(keysOf(instance["pose"]["position"]), (Keys{"x", "y", "z"}));
+    EXPECT_EQ(keysOf(instance["pose"]["orientation"]), (Keys{"x", "y", "z", "w"}));
+    for (const auto& part : {instance["pose"]["position"], instance["pose"]["orientation"]}) {
+      for (const auto& value : part)
+        EXPECT_TRUE(value.is_number());
+    }
+    EXPECT_TRUE(instance["objects"].is_array());
+    for (const json& object : instance["objects"]) {
+      EXPECT_EQ(keysOf(object), (Keys{"type", "id", "similarity", "position_compliance",
+                                      "orientation_compliance"}));
+      EXPECT_TRUE(object["type"].is_string() && object["id"].is_string());
+      EXPECT_TRUE(object["similarity"].is_number());
+      EXPECT_TRUE(object["position_compliance"].is_number());
+      EXPECT_TRUE(object["orientation_compliance"].is_number());
+    }
+    EXPECT_TRUE(instance["missing"].is_array());
+    for (const json& object : instance["missing"])
+      EXPECT_EQ(keysOf(object), (Keys{"type", "id"}));
+    EXPECT_TRUE(instance["isms"].is_array());
+    EXPECT_FALSE(instance["isms"].empty());
+    for (const json& ism : instance["isms"]) {
+      EXPECT_EQ(keysOf(ism), (Keys{"name", "objective"}));
+      EXPECT_TRUE(ism["name"].is_string() && ism["objective"].is_number());
+    }
+  }
+  return output;
+}
+
+double bestConfidence(const json& output) {
+  if (!output.contains("instances") || output["instances"].empty())
+    return 0.0;
+  return output["instances"][0].value("confidence", 0.0);
+}
+
+// ---- files the tests write ----
+
+// The objects of `configuration` as a JSON objects file (nlohmann keeps doubles exact).
+std::string writeJsonObjects(const TempDir& dir, const std::string& name,
+                             const asr_ism::Configuration& configuration) {
+  json objects = json::array();
+  for (const auto& estimate : configuration) {
+    const auto& p = estimate.pose.position;
+    const auto& q = estimate.pose.orientation;
+    objects.push_back(
+        {{"type", estimate.key.type},
+         {"id", estimate.key.id},
+         {"pose",
+          {{"position", {{"x", p.x()}, {"y", p.y()}, {"z", p.z()}}},
+           {"orientation", {{"x", q.x()}, {"y", q.y()}, {"z", q.z()}, {"w", q.w()}}}}}});
+  }
+  return dir.write(name, json{{"objects", objects}}.dump(2));
+}
+
+// A small demonstration file with two scenes: "table" (4 objects) and "shelf" (3 objects).
+std::string writeSmallDemonstration(const TempDir& dir) {
+  const std::string path = dir.file("small_demo.sqlite");
+  asr_ism::sqlite::appendDemonstration(path,
+                                       asr_ism::makeSyntheticDemonstration(4, 12, 7, "table"));
+  asr_ism::sqlite::appendDemonstration(path, asr_ism::makeSyntheticDemonstration(3, 8, 8, "shelf"));
+  return path;
+}
+
+// A file in the original schema whose scene "nothing" has no recorded set.
+std::string writeEmptyDemonstration(const TempDir& dir) {
+  const std::string path = dir.file("empty_demo.sqlite");
+  asr_ism::sqlite::Database db(path, asr_ism::sqlite::Database::Mode::kReadWriteCreate);
+  db.execute("CREATE TABLE recorded_patterns (id INTEGER PRIMARY KEY, name TEXT)");
+  db.execute("CREATE TABLE recorded_sets (id INTEGER PRIMARY KEY, patternId INTEGER)");
+  db.execute(
+      "CREATE TABLE recorded_objects (id INTEGER PRIMARY KEY, type TEXT, observedId TEXT, "
+      "resourcePath TEXT)");
+  db.execute(
+      "CREATE TABLE recorded_poses (id INTEGER PRIMARY KEY, objectId INTEGER, setId INTEGER, "
+      "px FLOAT, py FLOAT, pz FLOAT, qw FLOAT, qx FLOAT, qy FLOAT, qz FLOAT)");
+  db.execute("INSERT INTO recorded_patterns (name) VALUES ('nothing')");
+  return path;
+}
+
+std::vector<std::string> learnArguments(const std::string& demo, const std::string& scene,
+                                        const std::string& topology, const std::string& model) {
+  return {"learn", "--demo", demo, "--scene", scene, "--topology", topology, "--model", model};
+}
+
+// `info` shows, for the model stored in `model`, its relations, ISMs and levels.
+void expectInfoDescribes(const TempDir& dir, const std::string& model, const std::string& scene) {
+  const ToolRun info = runIsm(dir, {"info", "--model", model, "--scene", scene});
+  expectSuccess(info);
+  const IsmTree tree = sqlite::loadIsmTree(model, scene);
+  const std::string summary = "scene '" + scene + "': " + std::to_string(tree.objects().size()) +
+                              " objects, " + std::to_string(tree.topology.relationCount()) +
+                              " relations, " + std::to_string(tree.isms.size()) + " ISMs in " +
+                              std::to_string(tree.height()) + " levels";
+  EXPECT_EQ(info.out.rfind(summary, 0), 0u) << summary << "\n" << info.out;
+  for (std::size_t i = 0; i < tree.isms.size(); ++i) {
+    const std::string line =
+        "ISM " + tree.isms[i].name + " (level " + std::to_string(tree.level[i]) + ",";
+    EXPECT_NE(info.out.find(line), std::string::npos) << line << "\n" << info.out;
+  }
+}
+
+// Runs the tool in a fresh folder on one demonstration file, demo_.
+class IsmToolTest : public ::testing::Test {
+ protected:
+  IsmToolTest() : dir_(kPrefix) {}
+
+  // Learns `scene` with `topology` into `model` and checks that it worked.
+  void learn(const std::string& scene, const std::string& topology, const std::string& model) {
+    expectSuccess(runIsm(dir_, learnArguments(demo_, scene, topology, model)));
+  }
+  ToolRun recognizeSet(const std::string& model, const std::string& scene, int set) {
+    return runIsm(dir_, {"recognize", "--model", model, "--demo", demo_, "--scene", scene, "--set",
+                         std::to_string(set), "--json"});
+  }
+  ToolRun recognizeObjects(const std::string& model, const std::string& scene,
+                           const std::string& objects) {
+    return runIsm(
+        dir_, {"recognize", "--model", model, "--scene", scene, "--objects", objects, "--json"});
+  }
+
+  TempDir dir_;
+  std::string demo_;
+};
+
+// ---- on the real recordings ----
+
+class IsmToolOnRecordings : public IsmToolTest {
+ protected:
+  IsmToolOnRecordings() { demo_ = recording("story_1.sqlite"); }
+  void SetUp() override { REQUIRE_RECORDINGS(); }
+};
+
+TEST_F(IsmToolOnRecordings, LearnStarAndCompleteThenInfo) {
+  for (const char* topology : {"star", "complete"}) {
+    SCOPED_TRACE(topology);
+    const std::string model = dir_.file(std::string(topology) + ".sqlite");
+    const ToolRun run = runIsm(dir_, learnArguments(demo_, "gedeck", topology, model));
+    expectSuccess(run);
+    EXPECT_EQ(run.out.rfind("learned scene 'gedeck' from " + demo_, 0), 0u) << run.out;
+    expectInfoDescribes(dir_, model, "gedeck");
+  }
+  // The recording's table: 8 objects; a star relates the centre to 7, complete all 28 pairs.
+  const IsmTree star = sqlite::loadIsmTree(dir_.file("star.sqlite"), "gedeck");
+  const IsmTree complete = sqlite::loadIsmTree(dir_.file("complete.sqlite"), "gedeck");
+  EXPECT_EQ(star.topology.relationCount(), 7u);
+  EXPECT_EQ(star.isms.size(), 1u);
+  EXPECT_EQ(complete.topology.relationCount(), 28u);
+  EXPECT_GT(complete.height(), 1) << "a complete topology needs sub-ISMs";
+
+  // Without --scene, info shows every model in the file.
+  const ToolRun all = runIsm(dir_, {"info", "--model", dir_.file("complete.sqlite")});
+  expectSuccess(all);
+  EXPECT_NE(all.out.find("scene 'gedeck'"), std::string::npos) << all.out;
+}
+
+TEST_F(IsmToolOnRecordings, RecognizeARecordedSetAsJson) {
+  for (const char* topology : {"star", "complete"}) {
+    SCOPED_TRACE(topology);
+    const std::string model = dir_.file(std::string(topology) + ".sqlite");
+    learn("gedeck", topology, model);
+    const ToolRun run = recognizeSet(model, "gedeck", 0);
+    expectSuccess(run);
+    const json output = parseRecognition(run, "gedeck");
+    EXPECT_GE(bestConfidence(output), 0.99) << run.out;
+    // All eight objects of the set are in the best instance, and none is missing.
+    ASSERT_FALSE(output["instances"].empty());
+    EXPECT_EQ(output["instances"][0]["objects"].size(), 8u);
+    EXPECT_TRUE(output["instances"][0]["missing"].empty());
+  }
+}
+
+TEST_F(IsmToolOnRecordings, RecognizeObjectsFilesInYamlAndJson) {
+  const std::string model = dir_.file("complete.sqlite");
+  learn("gedeck", "complete", model);
+  const asr_ism::Configuration set =
+      asr_ism::sqlite::readDemonstration(demo_, "gedeck").configuration(5);
+  const std::string yaml = dir_.file("set5.yaml");
+  asr_ism::writeConfigurationFile(yaml, set);
+  const std::string json_file = writeJsonObjects(dir_, "set5.json", set);
+
+  const ToolRun from_demo = recognizeSet(model, "gedeck", 5);
+  expectSuccess(from_demo);
+  const json expected = parseRecognition(from_demo, "gedeck");
+  EXPECT_GE(bestConfidence(expected), 0.99);
+  for (const std::string& objects : {yaml, json_file}) {
+    SCOPED_TRACE(objects);
+    const ToolRun run = recognizeObjects(model, "gedeck", objects);
+    expectSuccess(run);
+    // The files hold the set's poses exactly, so the results are the recorded set's.
+    EXPECT_EQ(parseRecognition(run, "gedeck")["instances"], expected["instances"]);
+  }
+  // The same without --json: a summary line and the best instance for a person to read.
+  const ToolRun text =
+      runIsm(dir_, {"recognize", "--model", model, "--scene", "gedeck", "--objects", yaml});
+  expectSuccess(text);
+  EXPECT_EQ(text.out.rfind("scene 'gedeck': ", 0), 0u) << text.out;
+  EXPECT_NE(text.out.find("instance 1: confidence 1.000"), std::string::npos) << text.out;
+}
+
+TEST_F(IsmToolOnRecordings, ErrorsNameTheInput) {
+  const std::string model = dir_.file("star.sqlite");
+  expectInputError(runIsm(dir_, learnArguments(demo_, "Kitchen_Sink", "star", model)),
+                   {demo_, "Kitchen_Sink"});
+  EXPECT_FALSE(std::filesystem::exists(model)) << "a failed learn creates no model file";
+  learn("gedeck", "star", model);
+  expectInputError(recognizeSet(model, "Kitchen_Sink", 0), {"Kitchen_Sink"});
+  // gedeck has 112 sets: 0 to 111.
+  expectInputError(recognizeSet(model, "gedeck", 112), {demo_, "gedeck", "112"});
+  expectSuccess(recognizeSet(model, "gedeck", 111));
+}
+
+// ---- on small files written here (run without the recordings too) ----
+
+class IsmToolOnSmallFiles : public IsmToolTest {
+ protected:
+  IsmToolOnSmallFiles() { demo_ = writeSmallDemonstration(dir_); }
+
+  // An objects file with one object of "table" whose pose mapping is `pose`.
+  std::string objectsFile(const std::string& name, const std::string& pose) {
+    return dir_.write(name,
+                      "objects:\n  - type: object_1\n    id: \"0\"\n    pose: " + pose + "\n");
+  }
+};
+
+TEST_F(IsmToolOnSmallFiles, LearnInfoAndRecognize) {
+  for (const char* topology : {"star", "complete"}) {
+    SCOPED_TRACE(topology);
+    const std::string model = dir_.file(std::string(topology) + ".sqlite");
+    learn("table", topology, model);
+    expectInfoDescribes(dir_, model, "table");
+    const ToolRun run = recognizeSet(model, "table", 3);
+    expectSuccess(run);
+    const json from_set = parseRecognition(run, "table");
+    EXPECT_GE(bestConfidence(from_set), 0.99) << run.out;
+
+    const auto set = asr_ism::sqlite::readDemonstration(demo_, "table").configuration(3);
+    const std::string yaml = dir_.file(std::string(topology) + "_set3.yaml");
+    asr_ism::writeConfigurationFile(yaml, set);
+    const std::string json_file = writeJsonObjects(dir_, std::string(topology) + "_set3.json", set);
+    for (const std::string& objects : {yaml, json_file}) {
+      const ToolRun from_file = recognizeObjects(model, "table", objects);
+      expectSuccess(from_file);
+      EXPECT_EQ(parseRecognition(from_file, "table")["instances"], from_set["instances"]);
+    }
+  }
+}
+
+TEST_F(IsmToolOnSmallFiles, MissingFilesAreNamed) {
+  const std::string model = dir_.file("model.sqlite");
+  const std::string absent_demo = dir_.file("absent_demo.sqlite");
+  const std::string absent_model = dir_.file("absent_model.sqlite");
+  expectInputError(runIsm(dir_, learnArguments(absent_demo, "table", "star", model)),
+                   {absent_demo});
+  learn("table", "star", model);
+  expectInputError(recognizeSet(absent_model, "table", 0), {absent_model});
+  expectInputError(runIsm(dir_, {"info", "--model", absent_model}), {absent_model});
+  const std::string absent_objects = dir_.file("absent.yaml");
+  expectInputError(recognizeObjects(model, "table", absent_objects), {absent_objects});
+  const std::string absent_topology = dir_.file("absent_topology.txt");
+  expectInputError(runIsm(dir_, learnArguments(demo_, "table", absent_topology, model)),
+                   {absent_topology});
+  EXPECT_FALSE(std::filesystem::exists(absent_demo));
+  EXPECT_FALSE(std::filesystem::exists(absent_model));
+}
+
+TEST_F(IsmToolOnSmallFiles, UnknownScenesAreNamed) {
+  const std::string model = dir_.file("model.sqlite");
+  expectInputError(runIsm(dir_, learnArguments(demo_, "kitchen", "star", model)),
+                   {demo_, "'kitchen'"});
+  learn("table", "star", model);
+  // The scene is in the demonstration but the model file has no model of it.
+  const std::string objects = dir_.write("objects.yaml", "objects: []\n");
+  expectInputError(recognizeObjects(model, "shelf", objects), {model, "'shelf'"});
+  expectInputError(recognizeSet(model, "kitchen", 0), {demo_, "'kitchen'"});
+  expectInputError(runIsm(dir_, {"info", "--model", model, "--scene", "kitchen"}),
+                   {model, "'kitchen'"});
+}
+
+TEST_F(IsmToolOnSmallFiles, BadObjectsFilesAreNamed) {
+  const std::string model = dir_.file("model.sqlite");
+  learn("table", "complete", model);
+  const std::string malformed =
+      dir_.write("malformed.yaml", "objects:\n  - type: object_1\n    pose: {position: [\n");
+  expectInputError(recognizeObjects(model, "table", malformed), {malformed, "malformed"});
+
+  const std::string nan_pose = objectsFile(
+      "nan.yaml", "{position: {x: .nan, y: 0, z: 0}, orientation: {x: 0, y: 0, z: 0, w: 1}}");
+  expectInputError(recognizeObjects(model, "table", nan_pose),
+                   {nan_pose, "object 0 (object_1:0)", "not finite"});
+
+  const std::string zero_quaternion = objectsFile(
+      "zero.yaml", "{position: {x: 1, y: 0, z: 0}, orientation: {x: 0, y: 0, z: 0, w: 0}}");
+  expectInputError(recognizeObjects(model, "table", zero_quaternion),
+                   {zero_quaternion, "object 0 (object_1:0)", "zero quaternion"});
+
+  // A folder opens like a file but cannot be read.
+  expectInputError(recognizeObjects(model, "table", dir_.path()), {dir_.path()});
+}
+
+TEST_F(IsmToolOnSmallFiles, EmptyDemonstrationIsNamed) {
+  const std::string empty = writeEmptyDemonstration(dir_);
+  const std::string model = dir_.file("model.sqlite");
+  expectInputError(runIsm(dir_, learnArguments(empty, "nothing", "star", model)),
+                   {empty, "'nothing'"});
+  EXPECT_FALSE(std::filesystem::exists(model));
+  learn("table", "star", model);
+  expectInputError(runIsm(dir_, {"recognize", "--model", model, "--demo", empty, "--scene",
+                                 "nothing", "--set", "0"}),
+                   {empty, "'nothing'"});
+}
+
+TEST_F(IsmToolOnSmallFiles, SetOutOfRangeIsNamed) {
+  const std::string model = dir_.file("model.sqlite");
+  learn("table", "star", model);
+  // "table" has 12 sets: 0 to 11.
+  expectSuccess(recognizeSet(model, "table", 11));
+  expectInputError(recognizeSet(model, "table", 12), {demo_, "'table'", "set 12"});
+  // Beyond any integer: a usage error, not a wrapped-around number.
+  expectUsageError(runIsm(dir_, {"recognize", "--model", model, "--demo", demo_, "--scene", "table",
+                                 "--set", "99999999999999999999999"}),
+                   "99999999999999999999999");
+}
+
+TEST_F(IsmToolOnSmallFiles, DisconnectedTopologyIsNamed) {
+  const std::string topology = dir_.write("topology.txt", "object_0 object_1\nobject_2 object_3\n");
+  const std::string model = dir_.file("model.sqlite");
+  expectInputError(runIsm(dir_, learnArguments(demo_, "table", topology, model)),
+                   {topology, "not connected"});
+  EXPECT_FALSE(std::filesystem::exists(model));
+}
+
+TEST_F(IsmToolOnSmallFiles, UsageErrors) {
+  const std::string model = dir_.file("model.sqlite");
+  expectUsageError(runIsm(dir_, {"learn", "--demo", demo_, "--scene", "table", "--topology", "star",
+                                 "--model", model, "--bogus", "1"}),
+                   "--bogus");
+  expectUsageError(runIsm(dir_, {"info", "--model", model, "--verbose"}), "--verbose");
+  expectUsageError(runIsm(dir_, {"learn", "--demo", demo_, "--scene", "table"}), "--topology");
+  expectUsageError(runIsm(dir_, {"recognize", "--model", model, "--scene", "table"}), "--objects");
+  expectUsageError(runIsm(dir_, {"frobnicate"}), "frobnicate");
+  expectUsageError(runIsm(dir_, {}), "command");
+  EXPECT_FALSE(std::filesystem::exists(model));
+
+  const ToolRun help = runIsm(dir_, {"--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_EQ(help.out.rfind("usage: ism", 0), 0u) << help.out;
+  EXPECT_TRUE(help.err.empty());
+}
+
+TEST_F(IsmToolOnSmallFiles, ErrorsStayOnOneLine) {
+  // Names with line breaks (from the command line or a file) must not split the error line.
+  const std::string model = dir_.file("model.sqlite");
+  expectInputError(runIsm(dir_, learnArguments(demo_, "two\nlines", "star", model)),
+                   {"two\\nlines"});
+  learn("table", "star", model);
+  const std::string objects = dir_.write(
+      "objects.yaml", "objects:\n  - {type: \"a\\nb\", pose: {position: {x: 1, y: 0, z: 0}}}\n");
+  expectInputError(recognizeObjects(model, "table", objects), {objects, "a\\nb", "orientation"});
+}
+
+// ---- the model file is never half-written ----
+
+TEST_F(IsmToolOnSmallFiles, FailedLearnLeavesTheModelFileByteIdentical) {
+  const std::string model = dir_.file("model.sqlite");
+  learn("table", "complete", model);
+  const std::string before = fileBytes(model);
+  ASSERT_FALSE(before.empty());
+  const auto entries = dir_.entries();
+
+  const std::string disconnected = dir_.write("topology.txt", "object_0 object_1\n");
+  expectInputError(runIsm(dir_, learnArguments(demo_, "table", disconnected, model)),
+                   {disconnected});
+  expectInputError(runIsm(dir_, learnArguments(demo_, "kitchen", "star", model)), {"'kitchen'"});
+  expectInputError(
+      runIsm(dir_, learnArguments(writeEmptyDemonstration(dir_), "nothing", "star", model)),
+      {"'nothing'"});
+  EXPECT_EQ(fileBytes(model), before);
+  // Nothing but the inputs written above is left beside it (no journal, no temporary file).
+  for (const std::string& entry : dir_.entries()) {
+    const bool known = std::find(entries.begin(), entries.end(), entry) != entries.end() ||
+                       entry == "topology.txt" || entry == "empty_demo.sqlite";
+    EXPECT_TRUE(known) << entry;
+  }
+  expectInfoDescribes(dir_, model, "table");
+}
+
+TEST_F(IsmToolOnSmallFiles, SecondSceneKeepsTheFirstLoadable) {
+  const std::string model = dir_.file("model.sqlite");
+  learn("table", "complete", model);
+  const ToolRun table_before = recognizeSet(model, "table", 4);
+  expectSuccess(table_before);
+
+  learn("shelf", "star", model);
+  const ToolRun info = runIsm(dir_, {"info", "--model", model});
+  expectSuccess(info);
+  EXPECT_NE(info.out.find("scene 'table'"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("scene 'shelf'"), std::string::npos) << info.out;
+  EXPECT_EQ(sqlite::listModelScenes(model), (std::vector<std::string>{"table", "shelf"}));
+
+  const ToolRun table_after = recognizeSet(model, "table", 4);
+  expectSuccess(table_after);
+  EXPECT_EQ(parseRecognition(table_after, "table")["instances"],
+            parseRecognition(table_before, "table")["instances"]);
+  const ToolRun shelf = recognizeSet(model, "shelf", 2);
+  expectSuccess(shelf);
+  EXPECT_GE(bestConfidence(parseRecognition(shelf, "shelf")), 0.99) << shelf.out;
+}
+
+}  // namespace
+}  // namespace asr_ism_tree
