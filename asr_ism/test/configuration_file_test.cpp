@@ -313,25 +313,17 @@ TEST(ConfigurationFileErrors, NonNumberField) {
 
 TEST(ConfigurationFileErrors, NotFiniteValues) {
   TempDir dir(kPrefix);
-  const std::string nan_position =
-      readError(dir, secondObject("type: Cup, id: '7'",
-                                  "pose: {position: {x: 1, y: .nan, z: 3}, "
-                                  "orientation: {x: 0, y: 0, z: 0, w: 1}}"));
-  EXPECT_NE(nan_position.find("object 1 (Cup:7)"), std::string::npos) << nan_position;
-  EXPECT_NE(nan_position.find("not finite"), std::string::npos) << nan_position;
-
-  const std::string nan_orientation =
-      readError(dir, secondObject("type: Cup, id: '7'",
-                                  "pose: {position: {x: 1, y: 2, z: 3}, "
-                                  "orientation: {x: 0, y: 0, z: 0, w: .NaN}}"));
-  EXPECT_NE(nan_orientation.find("object 1 (Cup:7)"), std::string::npos) << nan_orientation;
-  EXPECT_NE(nan_orientation.find("not finite"), std::string::npos) << nan_orientation;
-
-  const std::string infinite =
-      readError(dir, secondObject("type: Cup, id: '7'",
-                                  "pose: {position: {x: -.inf, y: 2, z: 3}, "
-                                  "orientation: {x: 0, y: 0, z: 0, w: 1}}"));
-  EXPECT_NE(infinite.find("not finite"), std::string::npos) << infinite;
+  for (const char* pose : {"pose: {position: {x: 1, y: .nan, z: 3}, "
+                           "orientation: {x: 0, y: 0, z: 0, w: 1}}",
+                           "pose: {position: {x: 1, y: 2, z: 3}, "
+                           "orientation: {x: 0, y: 0, z: 0, w: .NaN}}",
+                           "pose: {position: {x: -.inf, y: 2, z: 3}, "
+                           "orientation: {x: 0, y: 0, z: 0, w: 1}}"}) {
+    SCOPED_TRACE(pose);
+    const std::string message = readError(dir, secondObject("type: Cup, id: '7'", pose));
+    EXPECT_NE(message.find("object 1 (Cup:7)"), std::string::npos) << message;
+    EXPECT_NE(message.find("not finite"), std::string::npos) << message;
+  }
 }
 
 TEST(ConfigurationFileErrors, ZeroQuaternion) {
