@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 
 #include "asr_ism/compliance.hpp"
@@ -19,6 +20,14 @@ namespace {
 constexpr double kBoundMargin = 1e-9;
 constexpr double kNoThreshold = -std::numeric_limits<double>::infinity();
 
+// Objectives are ranked at this resolution (the bound margin), not bit for bit: a rigid motion of
+// the input changes sums in their last bits, and equal hypotheses (in a two-member ISM the
+// reference's own vote and the member's vote score 1 + c each) must stay equal, so that the tie
+// goes to the same hypothesis wherever the bin grid falls.
+std::int64_t objectiveLevel(double objective) {
+  return std::llround(objective / kBoundMargin);
+}
+
 // Votes as parallel arrays in bin order, so that a bin's neighbourhood is a few contiguous ranges.
 struct Votes {
   std::vector<double> px, py, pz, qw, qx, qy, qz, weight;
@@ -30,16 +39,17 @@ struct Votes {
     for (auto* column : {&member, &input, &relative})
       column->resize(n);
   }
+
+  // The order in which equally good hypotheses are preferred: by member (the reference first),
+  // input and relative pose. It comes from the model and the inputs, not from where votes fall.
+  bool keyLess(std::size_t a, std::size_t b) const {
+    return std::tie(member[a], input[a], relative[a]) < std::tie(member[b], input[b], relative[b]);
+  }
 };
 
-struct Range {
-  std::uint32_t begin;
-  std::uint32_t end;
-};
-
-// A bin's best hypothesis.
-struct BinResult {
-  std::size_t bin = 0;
+// One evaluated reference hypothesis: a vote taken as the reference pose and the best vote of each
+// member around it.
+struct Hypothesis {
   int candidate = -1;
   double objective = 0.0;
   std::vector<int> votes;  // per member, the matched vote or -1
@@ -56,9 +66,12 @@ struct Neighbourhood {
   std::vector<std::uint32_t> end;
   std::vector<double> max_weight;         // per entry of `members`
   std::vector<std::uint32_t> votes;       // vote indices grouped by member
-  std::vector<std::uint32_t> candidates;  // the bin's own votes, fewest-vote members first
+  std::vector<std::uint32_t> candidates;  // the bin's own votes, in key order
   double upper_bound = 0.0;
   std::vector<int> atoms;  // sorted estimates that inputs with votes here stand for
+  // Every member here votes from a single input, so a hypothesis that matches all of them fully
+  // uses every estimate here, and anything else in the bin would only repeat part of it.
+  bool one_input_per_member = false;
 };
 
 // The estimates each input stands for; an input without any stands for itself, as -(index + 1).
@@ -152,6 +165,7 @@ class Search {
       }
     }
     n.atoms = unionOfAtoms(inputs_here_, atoms_of_input_);
+    n.one_input_per_member = inputs_here_.size() == n.members.size();
     // Sum in member order, as evaluate() does, so a perfect hypothesis meets the bound exactly.
     n.upper_bound = 0.0;
     for (double w : n.max_weight)
@@ -159,40 +173,46 @@ class Search {
     const auto& own = space.bins()[bin];
     n.candidates.resize(own.end - own.begin);
     std::iota(n.candidates.begin(), n.candidates.end(), own.begin);
-    std::stable_sort(n.candidates.begin(), n.candidates.end(),
-                     [&](std::uint32_t a, std::uint32_t b) {
-                       return rank_[votes_.member[a]] < rank_[votes_.member[b]];
-                     });
+    // In key order, so that among equally good hypotheses the first found is the one the model
+    // itself prefers (the reference's own vote first), not the one the bin layout puts first.
+    std::sort(n.candidates.begin(), n.candidates.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return votes_.keyLess(a, b); });
   }
 
-  // The best hypothesis of a bin that reaches `bar`; false if none does.
-  bool searchBin(const Neighbourhood& n, double bar, BinResult& result) {
-    result.candidate = -1;
-    result.objective = 0.0;
-    double best_in_bin = 0.0;
+  // Evaluates the hypotheses of one bin in key order and passes each that may still be selected
+  // to `emit`; `bar_now()` says what objective that takes, and may rise with every result emitted.
+  // A bin keeps every combination of inputs it finds, not only its best: which distinct results
+  // exist then does not depend on how the bin grid groups the votes, so the answer is that of an
+  // exhaustive search over all votes (a rigid motion of the input cannot change it).
+  template <typename BarNow, typename Emit>
+  void searchBin(const Neighbourhood& n, BarNow bar_now, Emit emit) {
+    double threshold = bar_now();
     for (std::uint32_t c : n.candidates) {
+      if (n.upper_bound < threshold - kBoundMargin)
+        return;  // nothing in this bin can be selected any more
       ++stats_.candidates;
-      const double threshold = std::max(bar, best_in_bin);
       double objective;
-      if (!evaluate(c, n, threshold, objective) || objective <= best_in_bin)
+      if (!evaluate(c, n, threshold, objective) || objective <= 0.0)
         continue;
-      best_in_bin = objective;
-      result.candidate = static_cast<int>(c);
-      result.objective = objective;
-      result.votes.assign(vote_.begin(), vote_.end());
-      result.position_compliance.assign(position_.begin(), position_.end());
-      result.orientation_compliance.assign(orientation_.begin(), orientation_.end());
-      if (objective >= n.upper_bound)
-        break;  // nothing in this bin can do better
+      Hypothesis hypothesis;
+      hypothesis.candidate = static_cast<int>(c);
+      hypothesis.objective = objective;
+      hypothesis.votes.assign(vote_.begin(), vote_.end());
+      hypothesis.position_compliance.assign(position_.begin(), position_.end());
+      hypothesis.orientation_compliance.assign(orientation_.begin(), orientation_.end());
+      hypothesis.assignment.assign(member_count_, -1);
+      for (std::size_t m = 0; m < member_count_; ++m) {
+        if (vote_[m] >= 0)
+          hypothesis.assignment[m] = votes_.input[vote_[m]];
+      }
+      emit(std::move(hypothesis));
+      // Later candidates come later in key order, and none can score more, so with one input per
+      // member they could only give a result this one makes redundant.
+      if (n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
+          std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; }))
+        return;
+      threshold = bar_now();
     }
-    if (result.candidate < 0)
-      return false;
-    result.assignment.assign(member_count_, -1);
-    for (std::size_t m = 0; m < member_count_; ++m) {
-      if (result.votes[m] >= 0)
-        result.assignment[m] = votes_.input[result.votes[m]];
-    }
-    return true;
   }
 
  private:
@@ -222,7 +242,13 @@ class Search {
         const double position = positionCompliance(distance_squared, bin_size_squared_);
         const double orientation = orientationCompliance(cos_half, sin_half_squared_max_angle_);
         const double similarity = position * orientation * votes_.weight[v];
-        if (similarity > best) {
+        // Near-equal votes go by key, not by where the bin layout put them.
+        const bool better = vote_[m] < 0
+                                ? similarity > 0.0
+                                : similarity > best + kBoundMargin ||
+                                      (similarity >= best - kBoundMargin &&
+                                       votes_.keyLess(v, static_cast<std::size_t>(vote_[m])));
+        if (better) {
           best = similarity;
           vote_[m] = static_cast<int>(v);
           position_[m] = position;
@@ -265,18 +291,16 @@ struct AssignmentHash {
   }
 };
 
-// What the results found so far rule out, for the two kinds of selection.
+// What the results found so far rule out: a result that uses only estimates a better result uses
+// too would be dropped as redundant, so a bin whose votes all come from such estimates need only
+// be searched for results that beat the better one.
 class Bar {
  public:
-  Bar(const IsmResultSelection& selection, const std::vector<std::vector<int>>& atoms_of_input)
-      : best_count_(selection.best_count), atoms_of_input_(atoms_of_input) {}
+  explicit Bar(const std::vector<std::vector<int>>& atoms_of_input)
+      : atoms_of_input_(atoms_of_input) {}
 
   // The objective a result of a bin with this neighbourhood must reach to be selected.
   double forBin(const Neighbourhood& n) const {
-    if (best_count_ > 0) {
-      return best_.size() < best_count_ ? kNoThreshold : best_.back().first;
-    }
-    // A result using only estimates of a better result would be dropped as its subset.
     double bar = kNoThreshold;
     for (const auto& [objective, atoms] : dominators_) {
       if (objective > bar &&
@@ -287,23 +311,7 @@ class Bar {
     return bar;
   }
 
-  void add(const BinResult& result) {
-    if (best_count_ > 0) {
-      // Keep the best_count best distinct assignments seen so far; their worst is the bar.
-      auto same = std::find_if(best_.begin(), best_.end(), [&](const auto& entry) {
-        return entry.second == result.assignment;
-      });
-      if (same != best_.end()) {
-        same->first = std::max(same->first, result.objective);
-      } else {
-        best_.emplace_back(result.objective, result.assignment);
-      }
-      std::stable_sort(best_.begin(), best_.end(),
-                       [](const auto& a, const auto& b) { return a.first > b.first; });
-      if (best_.size() > best_count_)
-        best_.resize(best_count_);
-      return;
-    }
+  void add(const Hypothesis& result) {
     std::vector<int> atoms = unionOfAtoms(result.assignment, atoms_of_input_);
     for (const auto& [objective, other] : dominators_) {
       if (objective >= result.objective &&
@@ -315,9 +323,7 @@ class Bar {
   }
 
  private:
-  const std::size_t best_count_;
   const std::vector<std::vector<int>>& atoms_of_input_;
-  std::vector<std::pair<double, std::vector<int>>> best_;
   std::vector<std::pair<double, std::vector<int>>> dominators_;
 };
 
@@ -405,19 +411,16 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
     return neighbourhoods[a].upper_bound > neighbourhoods[b].upper_bound;
   });
 
-  Bar bar(selection, atoms_of_input);
-  std::vector<BinResult> found;
+  Bar bar(atoms_of_input);
+  std::vector<Hypothesis> found;
   for (std::size_t b : bin_order) {
     const Neighbourhood& n = neighbourhoods[b];
-    const double bin_bar = bar.forBin(n);
-    if (n.upper_bound < bin_bar - kBoundMargin)
-      continue;
-    BinResult result;
-    result.bin = b;
-    if (!search.searchBin(n, bin_bar, result))
-      continue;
-    bar.add(result);
-    found.push_back(std::move(result));
+    search.searchBin(
+        n, [&] { return bar.forBin(n); },
+        [&](Hypothesis&& hypothesis) {
+          bar.add(hypothesis);
+          found.push_back(std::move(hypothesis));
+        });
   }
   if (stats != nullptr) {
     stats->votes += local_stats.votes;
@@ -426,46 +429,46 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
     stats->comparisons += local_stats.comparisons;
   }
 
-  // Best first; equal objectives in bin order, so the result does not depend on search order.
-  std::sort(found.begin(), found.end(), [](const BinResult& a, const BinResult& b) {
-    if (a.objective != b.objective)
-      return a.objective > b.objective;
-    return a.bin < b.bin;
+  // Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
+  // nor the bin grid decides between equally good results.
+  std::sort(found.begin(), found.end(), [&](const Hypothesis& a, const Hypothesis& b) {
+    const std::int64_t level_a = objectiveLevel(a.objective);
+    const std::int64_t level_b = objectiveLevel(b.objective);
+    if (level_a != level_b)
+      return level_a > level_b;
+    return votes.keyLess(a.candidate, b.candidate);
   });
   std::vector<IsmResult> results;
   std::unordered_map<std::vector<int>, bool, AssignmentHash> seen;
   std::vector<std::vector<int>> kept_atoms;
-  for (BinResult& bin_result : found) {
-    if (!seen.emplace(bin_result.assignment, true).second)
+  for (Hypothesis& hypothesis : found) {
+    if (!seen.emplace(hypothesis.assignment, true).second)
       continue;
-    std::vector<int> atoms = unionOfAtoms(bin_result.assignment, atoms_of_input);
-    if (selection.best_count > 0) {
-      if (results.size() >= selection.best_count)
-        break;
-    } else {
-      const bool dominated =
-          std::any_of(kept_atoms.begin(), kept_atoms.end(), [&](const std::vector<int>& better) {
-            return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
-          });
-      if (dominated)
-        continue;
-      kept_atoms.push_back(atoms);
-    }
-    const int c = bin_result.candidate;
+    std::vector<int> atoms = unionOfAtoms(hypothesis.assignment, atoms_of_input);
+    const bool dominated =
+        std::any_of(kept_atoms.begin(), kept_atoms.end(), [&](const std::vector<int>& better) {
+          return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
+        });
+    if (dominated)
+      continue;
+    if (selection.best_count > 0 && results.size() >= selection.best_count)
+      break;
+    kept_atoms.push_back(atoms);
+    const int c = hypothesis.candidate;
     IsmResult result;
     result.reference_pose =
         Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
              Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c]));
-    result.objective = bin_result.objective;
+    result.objective = hypothesis.objective;
     // Inputs that stand for themselves (negative atoms) sort first; report real estimates only.
     result.estimates.assign(std::lower_bound(atoms.begin(), atoms.end(), 0), atoms.end());
     result.matches.resize(member_count);
     for (std::size_t m = 0; m < member_count; ++m) {
-      const int vote = bin_result.votes[m];
+      const int vote = hypothesis.votes[m];
       if (vote < 0)
         continue;
       result.matches[m] = {votes.input[vote], votes.relative[vote],
-                           bin_result.position_compliance[m], bin_result.orientation_compliance[m]};
+                           hypothesis.position_compliance[m], hypothesis.orientation_compliance[m]};
     }
     results.push_back(std::move(result));
   }

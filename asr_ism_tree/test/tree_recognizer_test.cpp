@@ -163,8 +163,7 @@ TEST_F(TreeRecognizerTest, ConfidenceIsInvariantUnderARigidTransform) {
 }
 
 TEST_F(TreeRecognizerTest, ConfidenceOfACompleteTreeIsInvariantUnderARigidTransform) {
-  // Only the cup and the knife are off. The fork and the spoon, which form the two-member ISM
-  // breakfast_sub2, stay exact: see the known issue below for what happens otherwise.
+  // Only the cup and the knife are off; the two-member ISM breakfast_sub2 sees an exact pair.
   Configuration configuration = demonstration_.configuration(2);
   const Configuration perturbed = perturbedStep();
   configuration[kCup] = perturbed[kCup];
@@ -173,15 +172,13 @@ TEST_F(TreeRecognizerTest, ConfidenceOfACompleteTreeIsInvariantUnderARigidTransf
   expectInvariantUnderRigidTransforms(complete_, configuration);
 }
 
-// KNOWN ENGINE ISSUE (reported, not fixed here; run with --gtest_also_run_disabled_tests).
-// In the two-member ISM breakfast_sub2 (reference Fork, member Spoon) a fork 3.7 cm off gives two
-// hypotheses with exactly the same objective 1 + c: the fork's own vote and the spoon's vote
-// (compliance is symmetric). recognizeIsm breaks the tie by bin order, i.e. by where the bin grid
-// happens to fall, so a rigid transform of the input changes which pose is passed up as the
-// placeholder estimate, and with it the compliances in the root. Here the confidence of the
-// complete tree changes from 0.904782 to 0.908279 (fork similarity 0.8659 -> 0.8278, spoon 0.9509
-// -> 0.9890); the star tree (one ISM) is invariant.
-TEST_F(TreeRecognizerTest, DISABLED_KnownEngineIssue_SubIsmTieBreakDependsOnTheBinGrid) {
+// In the two-member ISM breakfast_sub2 (reference Fork, member Spoon) a fork a few centimetres
+// off gives two hypotheses with the same objective 1 + c: the fork's own vote and the spoon's
+// vote (compliance is symmetric). The tie must go to the same one however the bin grid falls
+// relative to the moved configuration, or the pose passed up to the root, and with it the
+// confidence, would change (0.904782 vs 0.908279 when ties went by bin order).
+TEST_F(TreeRecognizerTest, SubIsmTiesDoNotDependOnTheBinGrid) {
+  ASSERT_EQ(complete_.isms[3].members.size(), 2u);
   expectInvariantUnderRigidTransforms(complete_, perturbedStep());
 }
 
@@ -213,8 +210,9 @@ TEST_F(TreeRecognizerTest, InputOrderDoesNotChangeTheResult) {
 
 TEST(TreeRecognizer, ExactTiesAreBrokenIndependentlyOfTheInputOrder) {
   // Binary-exact coordinates and identity orientations make two cup estimates exactly equally
-  // good: 1/32 m on either side of where the cup belongs, with their votes in one bin. Whichever
-  // order they come in, the same cup must be chosen.
+  // good: 1/32 m on either side of where the cup belongs, with their votes in one bin. Neither
+  // plate-and-cup combination uses only estimates of the other, so both are instances, equally
+  // confident. Whichever order the estimates come in, the result must be the same.
   const ObjectKey plate{"Plate", "1"}, cup{"Cup", "1"};
   const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
   asr_ism::Demonstration demonstration("pair", {plate, cup});
@@ -231,8 +229,14 @@ TEST(TreeRecognizer, ExactTiesAreBrokenIndependentlyOfTheInputOrder) {
       {cup, Pose(Eigen::Vector3d(0.75, 0.5625 + 0.03125, 0.5), identity)}};
   const TreeRecognizer recognizer(tree);
   const auto original = recognizer.recognize(configuration);
-  ASSERT_EQ(original.size(), 1u);
-  EXPECT_EQ(original[0].confidence, (1.0 + (1.0 - 0.25 * 0.25)) / 2.0);
+  ASSERT_EQ(original.size(), 2u);
+  const double tied = (1.0 + (1.0 - 0.25 * 0.25)) / 2.0;
+  EXPECT_EQ(original[0].confidence, tied);
+  EXPECT_EQ(original[1].confidence, tied);
+  // The tie goes to the plate's own vote: the first instance sits exactly at the plate.
+  EXPECT_EQ(original[0].pose.position, configuration[0].pose.position);
+  const auto cup_of = [&](const SceneInstance& instance) { return find(instance, cup)->estimate; };
+  EXPECT_NE(cup_of(original[0]), cup_of(original[1]));
   std::vector<int> permutation = {0, 1, 2};
   do {
     Configuration permuted;

@@ -54,9 +54,9 @@ struct IsmResult {
 /// Which results of an ISM the caller needs; the search skips bins and hypotheses that cannot
 /// change them, so the answer is the same as with an exhaustive search, only faster.
 struct IsmResultSelection {
-  /// 0 (for a root ISM): every result whose estimates are not a subset of the estimates of a
-  /// result with a higher objective. n > 0 (for a sub-ISM whose results go up the tree): the n
-  /// best results, counting results that match the same inputs to the same members once.
+  /// A result is returned only if its estimates are not all used by a better result too (it would
+  /// add nothing the better one does not explain). Of those, 0 (for a root ISM) returns all;
+  /// n > 0 (for a sub-ISM whose results go up the tree) the n best.
   std::size_t best_count = 0;
 };
 
@@ -75,7 +75,10 @@ struct IsmRecognitionStats {
 /// similarity = position compliance x orientation compliance. The hypothesis with the highest
 /// objective is the bin's result. Of results that match the same inputs to the same members only
 /// the best is kept; `selection` says which of the rest are returned. Results come sorted by
-/// objective (best first, ties in bin order). Bins are searched in order of their objective's
+/// objective, best first. Objectives within 1e-9 of each other count as equal; such ties go to
+/// the hypothesis cast by the lower member (the reference first), then the lower input and
+/// relative pose, so that a rigid motion of all inputs, which moves the bin grid relative to
+/// them, does not change which hypothesis wins. Bins are searched in order of their objective's
 /// upper bound, and bins and hypotheses whose bound shows they cannot be selected are skipped.
 /// Deterministic.
 std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
