@@ -64,13 +64,6 @@ ObjectEstimate readObject(const YAML::Node& node, const std::string& what) {
                                                 numberField(position, "y", named + " position"),
                                                 numberField(position, "z", named + " position")),
                                 quaternion, named);
-  // Normalising a quaternion that is unit up to rounding changes its last bits (for about a
-  // third of them); one that is already canonical, as writeConfigurationFile writes them, is
-  // kept bit for bit so that a write -> read round trip is exact.
-  if (quaternion.w() >= 0.0 &&
-      std::abs(quaternion.squaredNorm() - 1.0) <= 8.0 * std::numeric_limits<double>::epsilon()) {
-    estimate.pose.orientation = quaternion;
-  }
   return estimate;
 }
 

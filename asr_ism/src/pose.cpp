@@ -1,6 +1,7 @@
 #include "asr_ism/pose.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "asr_ism/input_error.hpp"
@@ -30,7 +31,12 @@ double angleBetween(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
 }
 
 Eigen::Quaterniond canonicalQuaternion(const Eigen::Quaterniond& q) {
-  Eigen::Quaterniond unit = q.normalized();
+  // A quaternion that is unit up to rounding is kept bit for bit: normalising it again would
+  // change the last bits of about a third of them, so poses would not survive a round trip
+  // through a file exactly and canonicalQuaternion would not be idempotent.
+  const bool unit_already =
+      std::abs(q.squaredNorm() - 1.0) <= 8.0 * std::numeric_limits<double>::epsilon();
+  Eigen::Quaterniond unit = unit_already ? q : q.normalized();
   if (unit.w() < 0.0) {
     unit.coeffs() = -unit.coeffs();
   }

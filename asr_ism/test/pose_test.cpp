@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "asr_ism/input_error.hpp"
 
@@ -30,6 +31,22 @@ TEST(Pose, QuaternionsAreCanonical) {
   EXPECT_NEAR(pose.orientation.norm(), 1.0, 1e-15);
   EXPECT_NEAR(angleBetween(pose.orientation, Eigen::Quaterniond(0.5, -0.5, -0.5, -0.5)), 0.0,
               1e-12);
+}
+
+TEST(Pose, CanonicalisingIsIdempotentAndKeepsUnitQuaternionsBitForBit) {
+  std::mt19937 random(11);
+  std::normal_distribution<double> gaussian;
+  int rescaled_by_normalising = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const Eigen::Quaterniond raw(gaussian(random), gaussian(random), gaussian(random),
+                                 gaussian(random));
+    const Eigen::Quaterniond once = canonicalQuaternion(raw);
+    EXPECT_EQ(canonicalQuaternion(once).coeffs(), once.coeffs());
+    EXPECT_EQ(canonicalQuaternion(Eigen::Quaterniond(-once.coeffs())).coeffs(), once.coeffs());
+    rescaled_by_normalising += once.normalized().coeffs() != once.coeffs();
+  }
+  // Plain normalising would have changed some of these unit quaternions in their last bits.
+  EXPECT_GT(rescaled_by_normalising, 0);
 }
 
 TEST(Pose, AngleBetweenIsPreciseForTinyAndLargeAngles) {

@@ -28,7 +28,8 @@ Pose relativePose(const Pose& from, const Pose& to);
 /// Angle in radians of the rotation between two unit quaternions, in [0, pi].
 double angleBetween(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
 
-/// Returns q scaled to unit length with w >= 0 (q and -q are the same rotation).
+/// Returns q scaled to unit length with w >= 0 (q and -q are the same rotation). A quaternion
+/// that is unit up to rounding is not rescaled, so the function is idempotent.
 Eigen::Quaterniond canonicalQuaternion(const Eigen::Quaterniond& q);
 
 /// Validates a pose a user supplied and returns it canonicalised. Throws InputError naming
