@@ -10,6 +10,7 @@
 
 #include "asr_ism/input_error.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
+#include "instance_lookup.hpp"
 #include "synthetic_scene.hpp"
 
 namespace asr_ism_tree {
@@ -48,18 +49,6 @@ class TreeRecognizerTest : public ::testing::Test {
   IsmTree star_;
   IsmTree complete_;
 };
-
-double bestConfidence(const std::vector<SceneInstance>& instances) {
-  return instances.empty() ? 0.0 : instances.front().confidence;
-}
-
-const InstanceObject* find(const SceneInstance& instance, const ObjectKey& key) {
-  for (const InstanceObject& object : instance.objects) {
-    if (object.key == key)
-      return &object;
-  }
-  return nullptr;
-}
 
 Configuration transformed(const Configuration& configuration, const Pose& transform) {
   Configuration result = configuration;
