@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -13,6 +14,7 @@
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
+#include "instance_lookup.hpp"
 
 namespace asr_ism_tree {
 namespace {
@@ -69,18 +71,6 @@ const LearnedScene& learned(const std::string& file, const std::string& scene) {
         generateIsmTree(entry->demonstration, RelationTopology::complete(objects), {});
   }
   return *entry;
-}
-
-double bestConfidence(const std::vector<SceneInstance>& instances) {
-  return instances.empty() ? 0.0 : instances.front().confidence;
-}
-
-const InstanceObject* find(const SceneInstance& instance, const ObjectKey& key) {
-  for (const InstanceObject& object : instance.objects) {
-    if (object.key == key)
-      return &object;
-  }
-  return nullptr;
 }
 
 const char* topologyName(bool complete_topology) {
@@ -171,6 +161,54 @@ TEST_P(KitchenScene, MovedOrTurnedObjectIsRejected) {
   }
 }
 
+// Moving the whole configuration rigidly must move the instances with it and change no
+// confidence, also where equally good hypotheses compete (the bin grid falls differently on the
+// moved votes). Every 7th recorded set with two objects pushed off by up to 4 cm and 11 degrees,
+// so that compliances lie strictly between 0 and 1, under three motions.
+TEST_P(KitchenScene, ConfidenceIsInvariantUnderRigidMotions) {
+  const LearnedScene& s = scene();
+  const Pose motions[] = {
+      Pose(Eigen::Vector3d(2.5, -1.3, 0.4),
+           Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()))),
+      Pose(Eigen::Vector3d(-7.77, 3.1, -0.05),
+           Eigen::Quaterniond(Eigen::AngleAxisd(2.9, Eigen::Vector3d::UnitZ()))),
+      Pose(Eigen::Vector3d(0.049, 0.051, 0.0),
+           Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX())))};
+  int partly_recognised = 0;
+  for (bool complete_topology : {false, true}) {
+    const TreeRecognizer recognizer(s.tree(complete_topology));
+    for (std::size_t step = 0; step < s.demonstration.stepCount(); step += 7) {
+      Configuration configuration = s.demonstration.configuration(step);
+      for (std::size_t k = 0; k < 2 && k < configuration.size(); ++k) {
+        Pose& pose = configuration[(step + 3 * k) % configuration.size()].pose;
+        const double phase = 0.37 * static_cast<double>(step + k);
+        pose.position += Eigen::Vector3d(0.04 * std::sin(phase), 0.04 * std::cos(phase), 0.0);
+        pose.orientation *= Eigen::Quaterniond(
+            Eigen::AngleAxisd(0.2 * std::sin(2.0 * phase), Eigen::Vector3d::UnitZ()));
+      }
+      const auto original = recognizer.recognize(configuration);
+      ASSERT_FALSE(original.empty());
+      partly_recognised += original[0].confidence > 0.5 && original[0].confidence < kAccepted;
+      for (const Pose& motion : motions) {
+        Configuration moved = configuration;
+        for (auto& estimate : moved)
+          estimate.pose = asr_ism::compose(motion, estimate.pose);
+        const auto instances = recognizer.recognize(moved);
+        const std::string what =
+            std::string(topologyName(complete_topology)) + " tree, set " + std::to_string(step);
+        ASSERT_EQ(instances.size(), original.size()) << what;
+        for (std::size_t i = 0; i < original.size(); ++i)
+          EXPECT_NEAR(instances[i].confidence, original[i].confidence, 1e-9) << what;
+        EXPECT_TRUE(asr_ism::approximatelyEqual(
+            instances[0].pose, asr_ism::compose(motion, original[0].pose), 1e-9, 1e-9))
+            << what;
+      }
+    }
+  }
+  // The pushed objects must matter in many sets, or the test would prove little.
+  EXPECT_GE(partly_recognised, 4);
+}
+
 std::string sceneName(const ::testing::TestParamInfo<KitchenSceneInfo>& info) {
   return info.param.scene;
 }
@@ -180,7 +218,8 @@ INSTANTIATE_TEST_SUITE_P(Recordings, KitchenScene, ::testing::ValuesIn(kKitchenS
 // Surprising but documented: an object counts once per leaf it appears in. In the complete
 // (triangle) tree of Drinks - Setting, Sprudelflasche appears in two of the four leaves, so the
 // bottle alone, moved away from the others, scores 2 of 4, exactly as much as the cup and the
-// juice together. Which of the two tied instances comes first is left to bin order.
+// juice together. Which of the two tied instances comes first is decided by the tie rule of
+// recognizeIsm (the lower member's hypothesis), not tested here.
 TEST(Recordings, LoneObjectInTwoLeavesTiesWithTheOtherTwo) {
   REQUIRE_RECORDINGS();
   const LearnedScene& s = learned("story_2.sqlite", "Getraenke_Gedeck");
