@@ -5,11 +5,16 @@
 
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/thread_pool.hpp"
+#include "asr_ism_tree/cli/recordings_folder.hpp"
+#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/star_center.hpp"
-#include "timing.hpp"
 #include "tree_measurement.hpp"
 
 namespace asr_ism_tree::bench {
+
+using cli::evenlySpaced;
+using cli::maximum;
+using cli::median;
 namespace {
 
 SceneRow measure(const asr_ism::Demonstration& demonstration, const std::string& topology_name,
@@ -49,17 +54,6 @@ SceneRow measure(const asr_ism::Demonstration& demonstration, const std::string&
 
 }  // namespace
 
-const std::vector<KitchenScene>& kitchenScenes() {
-  static const std::vector<KitchenScene> scenes = {
-      {"story_1.sqlite", "gedeck"},           {"story_1.sqlite", "Gedeck_Ende"},
-      {"story_1.sqlite", "Gedeck_Schrank_2"}, {"story_1.sqlite", "Spuelkorb_3"},
-      {"story_2.sqlite", "Brot_Gedeck_2"},    {"story_2.sqlite", "Brot_Regal"},
-      {"story_2.sqlite", "Getraenke_Gedeck"}, {"story_2.sqlite", "Getraenke_Regal"},
-      {"story_2.sqlite", "Muesli_Gedeck"},    {"story_2.sqlite", "Muesli_Regal"},
-  };
-  return scenes;
-}
-
 std::vector<SceneRow> benchmarkKitchenScenes(const std::string& recordings,
                                              const BenchmarkSettings& settings,
                                              std::ostream& progress) {
@@ -67,7 +61,7 @@ std::vector<SceneRow> benchmarkKitchenScenes(const std::string& recordings,
   if (settings.threads > 1)
     pool = std::make_unique<asr_ism::ThreadPool>(settings.threads);
   std::vector<SceneRow> rows;
-  for (const KitchenScene& kitchen_scene : kitchenScenes()) {
+  for (const cli::KitchenScene& kitchen_scene : cli::kitchenScenes()) {
     const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
         recordings + "/" + kitchen_scene.file, kitchen_scene.scene);
     const std::size_t center = chooseStarCenter(demonstration);

@@ -27,13 +27,6 @@ struct SceneRow {
   std::size_t missing_one_sets = 0;  // sets the left-out measure used
 };
 
-/// The ten kitchen scenes of the paper's evaluation: file (in the recordings folder) and scene.
-struct KitchenScene {
-  const char* file;
-  const char* scene;
-};
-const std::vector<KitchenScene>& kitchenScenes();
-
 /// Learns every kitchen scene from `recordings` with a star (centre by chooseStarCenter) and a
 /// complete topology and measures learning and recognition of its own recorded sets. Progress
 /// goes to `progress`.

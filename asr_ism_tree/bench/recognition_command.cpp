@@ -1,13 +1,11 @@
 #include "recognition_command.hpp"
 
-#include <sys/stat.h>
-
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 
 #include "asr_ism/input_error.hpp"
-#include "command_line.hpp"
+#include "asr_ism_tree/cli/command_line.hpp"
+#include "asr_ism_tree/cli/recordings_folder.hpp"
 #include "recognition_benchmark.hpp"
 #include "report.hpp"
 #include "synthetic_benchmark.hpp"
@@ -16,21 +14,8 @@
 namespace asr_ism_tree::bench {
 namespace {
 
-using tools::CommandLine;
-using tools::UsageError;
-
-bool isDirectory(const std::string& path) {
-  struct stat info;
-  return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
-}
-
-// --recordings, else $ASR_RECORDINGS_DIR, else the folder beside the source tree.
-std::string recordingsFolder(const CommandLine& options) {
-  if (options.has("recordings"))
-    return options.required("recordings");
-  const char* from_environment = std::getenv("ASR_RECORDINGS_DIR");
-  return from_environment != nullptr ? from_environment : ASR_RECORDINGS_DIR;
-}
+using cli::CommandLine;
+using cli::UsageError;
 
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json) {
   std::ofstream file(path, std::ios::trunc);
@@ -55,8 +40,8 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   std::ostream& progress = std::cerr;
 
   std::vector<SceneRow> scene_rows;
-  const std::string recordings = recordingsFolder(options);
-  if (!isDirectory(recordings)) {
+  const std::string recordings = cli::recordingsFolder(options, ASR_RECORDINGS_DIR);
+  if (!cli::isDirectory(recordings)) {
     progress << "asr_bench: recordings folder '" << recordings
              << "' not found; skipping the kitchen scenes (give --recordings DIR or set "
                 "ASR_RECORDINGS_DIR)\n";

@@ -5,10 +5,14 @@
 
 #include "asr_ism/synthetic_demonstration.hpp"
 #include "asr_ism/thread_pool.hpp"
-#include "timing.hpp"
+#include "asr_ism_tree/cli/timing.hpp"
 #include "tree_measurement.hpp"
 
 namespace asr_ism_tree::bench {
+
+using cli::evenlySpaced;
+using cli::maximum;
+using cli::median;
 
 std::vector<std::size_t> syntheticObjectCounts() {
   return {2, 3, 4, 5, 6, 7, 8, 9, 10};

@@ -7,11 +7,13 @@
 #include <limits>
 #include <string>
 
+#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
-#include "timing.hpp"
 
 namespace asr_ism_tree::bench {
+
+using cli::millisecondsOf;
 namespace {
 
 constexpr double kRecognisedConfidence = 0.99;

@@ -11,10 +11,10 @@
 #include "asr_ism/input_error.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
+#include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
-#include "command_line.hpp"
 
 namespace {
 
@@ -102,8 +102,8 @@ std::string recognitionCheck(const Demonstration& demonstration, const Configura
 }
 
 int run(const std::vector<std::string>& arguments) {
-  using asr_ism_tree::tools::UsageError;
-  const asr_ism_tree::tools::CommandLine options(arguments, {"out", "seed"}, {"force"});
+  using asr_ism_tree::cli::UsageError;
+  const asr_ism_tree::cli::CommandLine options(arguments, {"out", "seed"}, {"force"});
   const fs::path out = options.required("out");
   const long long seed = options.integer("seed", 1);
   if (seed > 0xffffffffLL)
@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
   }
   try {
     return run(arguments);
-  } catch (const asr_ism_tree::tools::UsageError& error) {
+  } catch (const asr_ism_tree::cli::UsageError& error) {
     std::cerr << "asr_demo_data: " << error.message << "\n" << kUsage;
     return 2;
   } catch (const asr_ism::InputError& error) {

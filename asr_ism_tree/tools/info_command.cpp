@@ -2,11 +2,14 @@
 #include <iostream>
 
 #include "asr_ism/input_error.hpp"
+#include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
-#include "command_line.hpp"
 #include "commands.hpp"
 
 namespace asr_ism_tree::tools {
+
+using cli::CommandLine;
+using cli::UsageError;
 namespace {
 
 void printIsm(const IsmTree& tree, int ism, int depth) {

@@ -3,15 +3,18 @@
 #include <iostream>
 
 #include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism_tree/cli/command_line.hpp"
+#include "asr_ism_tree/cli/object_lookup.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/topology_file.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
-#include "command_line.hpp"
 #include "commands.hpp"
-#include "object_lookup.hpp"
 
 namespace asr_ism_tree::tools {
+
+using cli::CommandLine;
+using cli::UsageError;
 
 int runLearn(const std::vector<std::string>& arguments) {
   const CommandLine options(
@@ -39,10 +42,10 @@ int runLearn(const std::vector<std::string>& arguments) {
   RelationTopology topology;
   std::string topology_description;
   if (topology_spec == "star") {
-    const std::size_t center =
-        options.has("star-center")
-            ? findObject(options.required("star-center"), demonstration.objects(), "--star-center")
-            : chooseStarCenter(demonstration);
+    const std::size_t center = options.has("star-center")
+                                   ? cli::findObject(options.required("star-center"),
+                                                     demonstration.objects(), "--star-center")
+                                   : chooseStarCenter(demonstration);
     topology = RelationTopology::star(demonstration.objects(), center);
     topology_description = "star centred on " + demonstration.objects()[center].toString();
   } else if (topology_spec == "complete") {

@@ -1,10 +1,10 @@
-#include "command_line.hpp"
+#include "asr_ism_tree/cli/command_line.hpp"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
-namespace asr_ism_tree::tools {
+namespace asr_ism_tree::cli {
 
 CommandLine::CommandLine(const std::vector<std::string>& arguments,
                          const std::set<std::string>& value_options,
@@ -65,4 +65,4 @@ long long CommandLine::integer(const std::string& name, long long fallback) cons
   return value;
 }
 
-}  // namespace asr_ism_tree::tools
+}  // namespace asr_ism_tree::cli

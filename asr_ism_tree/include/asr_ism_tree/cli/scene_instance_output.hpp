@@ -6,7 +6,7 @@
 
 #include "asr_ism_tree/scene_instance.hpp"
 
-namespace asr_ism_tree::tools {
+namespace asr_ism_tree::cli {
 
 /// {"position": {x, y, z}, "orientation": {x, y, z, w}}, geometry_msgs field names.
 nlohmann::ordered_json poseToJson(const asr_ism::Pose& pose);
@@ -17,4 +17,4 @@ nlohmann::ordered_json instanceToJson(const SceneInstance& instance);
 /// Instances for a person to read: confidence, pose, each object's ratings, missing objects.
 void printInstances(std::ostream& out, const std::vector<SceneInstance>& instances);
 
-}  // namespace asr_ism_tree::tools
+}  // namespace asr_ism_tree::cli

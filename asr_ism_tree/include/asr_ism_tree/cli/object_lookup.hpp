@@ -5,11 +5,11 @@
 
 #include "asr_ism/object.hpp"
 
-namespace asr_ism_tree::tools {
+namespace asr_ism_tree::cli {
 
 /// Index of the object a user named as `type` (if that type is unique) or `type:id`. Throws
 /// InputError naming `what` for an unknown or ambiguous name.
 std::size_t findObject(const std::string& name, const std::vector<asr_ism::ObjectKey>& objects,
                        const std::string& what);
 
-}  // namespace asr_ism_tree::tools
+}  // namespace asr_ism_tree::cli

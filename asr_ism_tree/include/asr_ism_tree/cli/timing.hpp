@@ -4,7 +4,7 @@
 #include <chrono>
 #include <vector>
 
-namespace asr_ism_tree::bench {
+namespace asr_ism_tree::cli {
 
 /// Wall-clock milliseconds a call takes, on the monotonic clock (immune to clock adjustments).
 template <typename Call>
@@ -44,4 +44,4 @@ inline std::vector<std::size_t> evenlySpaced(std::size_t total, std::size_t coun
   return indices;
 }
 
-}  // namespace asr_ism_tree::bench
+}  // namespace asr_ism_tree::cli

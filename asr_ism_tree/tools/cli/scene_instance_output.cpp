@@ -1,8 +1,8 @@
-#include "scene_instance_output.hpp"
+#include "asr_ism_tree/cli/scene_instance_output.hpp"
 
 #include <cstdio>
 
-namespace asr_ism_tree::tools {
+namespace asr_ism_tree::cli {
 
 nlohmann::ordered_json poseToJson(const asr_ism::Pose& pose) {
   nlohmann::ordered_json json;
@@ -58,4 +58,4 @@ void printInstances(std::ostream& out, const std::vector<SceneInstance>& instanc
   }
 }
 
-}  // namespace asr_ism_tree::tools
+}  // namespace asr_ism_tree::cli

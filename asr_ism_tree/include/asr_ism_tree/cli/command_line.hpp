@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace asr_ism_tree::tools {
+namespace asr_ism_tree::cli {
 
 /// Thrown for a command line that cannot be run; the tool prints usage and exits with 2.
 struct UsageError {
@@ -35,4 +35,4 @@ class CommandLine {
   std::set<std::string> flags_;
 };
 
-}  // namespace asr_ism_tree::tools
+}  // namespace asr_ism_tree::cli

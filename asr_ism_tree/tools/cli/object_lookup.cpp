@@ -1,8 +1,8 @@
-#include "object_lookup.hpp"
+#include "asr_ism_tree/cli/object_lookup.hpp"
 
 #include "asr_ism/input_error.hpp"
 
-namespace asr_ism_tree::tools {
+namespace asr_ism_tree::cli {
 
 std::size_t findObject(const std::string& name, const std::vector<asr_ism::ObjectKey>& objects,
                        const std::string& what) {
@@ -25,4 +25,4 @@ std::size_t findObject(const std::string& name, const std::vector<asr_ism::Objec
                             "' (objects: " + known + ")");
 }
 
-}  // namespace asr_ism_tree::tools
+}  // namespace asr_ism_tree::cli

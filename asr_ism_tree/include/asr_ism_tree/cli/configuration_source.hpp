@@ -1,0 +1,16 @@
+#pragma once
+
+#include <string>
+
+#include "asr_ism/object.hpp"
+#include "asr_ism_tree/cli/command_line.hpp"
+
+namespace asr_ism_tree::cli {
+
+/// The object configuration a command works on: `--objects FILE` (YAML or JSON), or the K-th
+/// recorded set (0-based, by id) of `scene` with `--demo DB --set K`. Throws UsageError for
+/// neither or both, InputError naming the file for a bad file or a set that does not exist.
+/// The command must declare the options objects, demo and set.
+asr_ism::Configuration loadConfiguration(const CommandLine& options, const std::string& scene);
+
+}  // namespace asr_ism_tree::cli

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "asr_ism_tree/cli/command_line.hpp"
+
+namespace asr_ism_tree::cli {
+
+/// The recordings folder a benchmark reads: `--recordings DIR`, else $ASR_RECORDINGS_DIR, else
+/// `compiled_default` (../shared/data/asr_recordings beside the source tree). The command must
+/// declare the option recordings. The folder may not exist: check with isDirectory.
+std::string recordingsFolder(const CommandLine& options, const std::string& compiled_default);
+
+bool isDirectory(const std::string& path);
+
+/// The ten kitchen scenes of the paper's evaluation: file (in the recordings folder) and scene.
+struct KitchenScene {
+  const char* file;
+  const char* scene;
+};
+const std::vector<KitchenScene>& kitchenScenes();
+
+}  // namespace asr_ism_tree::cli

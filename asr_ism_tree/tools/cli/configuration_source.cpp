@@ -1,0 +1,31 @@
+#include "asr_ism_tree/cli/configuration_source.hpp"
+
+#include "asr_ism/configuration_file.hpp"
+#include "asr_ism/input_error.hpp"
+#include "asr_ism/sqlite/demonstration_reader.hpp"
+
+namespace asr_ism_tree::cli {
+
+asr_ism::Configuration loadConfiguration(const CommandLine& options, const std::string& scene) {
+  if (options.has("objects") == options.has("demo")) {
+    throw UsageError{"give either --objects FILE or --demo DB --set K"};
+  }
+  if (options.has("objects")) {
+    if (options.has("set"))
+      throw UsageError{"--set goes with --demo, not --objects"};
+    return asr_ism::readConfigurationFile(options.required("objects"));
+  }
+  const std::string demo_path = options.required("demo");
+  const long long set = options.integer("set", -1);
+  if (set < 0)
+    throw UsageError{"--demo needs --set K"};
+  const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(demo_path, scene);
+  if (static_cast<std::size_t>(set) >= demonstration.stepCount()) {
+    throw asr_ism::InputError(demo_path + ": scene '" + scene + "' has " +
+                              std::to_string(demonstration.stepCount()) + " recorded sets; set " +
+                              std::to_string(set) + " does not exist (sets count from 0)");
+  }
+  return demonstration.configuration(static_cast<std::size_t>(set));
+}
+
+}  // namespace asr_ism_tree::cli
