@@ -1,0 +1,97 @@
+#include <gtest/gtest.h>
+#include <ros/time.h>
+#include <tf2_ros/buffer.h>
+
+#include <cmath>
+
+#include "asr_ism/input_error.hpp"
+#include "asr_ism/ros/estimate_intake.hpp"
+#include "asr_ism/ros/object_estimate_message.hpp"
+
+namespace asr_ism::ros_interface {
+namespace {
+
+asr_msgs::ObjectEstimate cupIn(const std::string& frame) {
+  asr_msgs::ObjectEstimate message;
+  message.header.frame_id = frame;
+  message.header.stamp = ros::Time(100.0);
+  message.type = "Cup";
+  message.instance_id = "1";
+  message.pose.pose.position.x = 1.0;
+  message.pose.pose.orientation.w = 1.0;
+  return message;
+}
+
+TEST(RosObjectEstimateMessage, RoundTrip) {
+  const ObjectEstimate estimate{
+      {"Plate", "7"},
+      Pose(Eigen::Vector3d(0.1, -0.2, 0.75),
+           Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())))};
+  std_msgs::Header header;
+  header.frame_id = "map";
+  const ObjectEstimate back = fromEstimateMessage(toEstimateMessage(estimate, header));
+  EXPECT_EQ(back.key, estimate.key);
+  EXPECT_EQ(back.pose.position, estimate.pose.position);
+  EXPECT_EQ(back.pose.orientation.coeffs(), estimate.pose.orientation.coeffs());
+}
+
+TEST(RosObjectEstimateMessage, BadEstimatesNameTheEstimate) {
+  auto empty_type = cupIn("camera");
+  empty_type.type.clear();
+  auto nan_position = cupIn("camera");
+  nan_position.pose.pose.position.y = std::nan("");
+  auto zero_quaternion = cupIn("camera");
+  zero_quaternion.pose.pose.orientation.w = 0.0;
+  auto unnormalised = cupIn("camera");
+  unnormalised.pose.pose.orientation.w = 2.0;
+  for (const auto& [message, expected] :
+       {std::pair{empty_type, "type is empty"}, std::pair{nan_position, "not finite"},
+        std::pair{zero_quaternion, "zero quaternion"}, std::pair{unnormalised, "not normalised"}}) {
+    try {
+      fromEstimateMessage(message);
+      ADD_FAILURE() << "accepted: " << expected;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find("frame 'camera'"), std::string::npos);
+    }
+  }
+}
+
+TEST(RosEstimateIntake, TransformsIntoTheFixedFrameAndCountsRejections) {
+  ros::Time::init();
+  tf2_ros::Buffer buffer;
+  geometry_msgs::TransformStamped camera_in_map;
+  camera_in_map.header.frame_id = "map";
+  camera_in_map.header.stamp = ros::Time(100.0);
+  camera_in_map.child_frame_id = "camera";
+  camera_in_map.transform.translation.z = 1.5;
+  // The camera looks along the map's x axis turned by 90 degrees about z.
+  camera_in_map.transform.rotation.z = std::sqrt(0.5);
+  camera_in_map.transform.rotation.w = std::sqrt(0.5);
+  buffer.setTransform(camera_in_map, "test", true);
+
+  EstimateIntake intake(buffer, "map", ros::Duration(0.0));
+  const auto in_map = intake.accept(cupIn("camera"));
+  ASSERT_TRUE(in_map.has_value());
+  EXPECT_NEAR(in_map->pose.position.x(), 0.0, 1e-12);
+  EXPECT_NEAR(in_map->pose.position.y(), 1.0, 1e-12);
+  EXPECT_NEAR(in_map->pose.position.z(), 1.5, 1e-12);
+  EXPECT_NEAR(angleBetween(in_map->pose.orientation,
+                           Eigen::Quaterniond(std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5))),
+              0.0, 1e-12);
+  // In the fixed frame, or without a frame: taken as they are.
+  EXPECT_EQ(intake.accept(cupIn("map"))->pose.position.x(), 1.0);
+  EXPECT_EQ(intake.accept(cupIn(""))->pose.position.x(), 1.0);
+
+  auto nan_estimate = cupIn("camera");
+  nan_estimate.pose.pose.orientation.x = std::nan("");
+  EXPECT_FALSE(intake.accept(nan_estimate).has_value());
+  EXPECT_FALSE(intake.accept(cupIn("unknown_frame")).has_value());
+  EXPECT_EQ(intake.acceptedCount(), 3u);
+  EXPECT_EQ(intake.rejectedCount(), 2u);
+  EXPECT_EQ(intake.rejectedByReason().at("invalid estimate"), 1u);
+  EXPECT_EQ(intake.rejectedByReason().at("no transform"), 1u);
+}
+
+}  // namespace
+}  // namespace asr_ism::ros_interface
