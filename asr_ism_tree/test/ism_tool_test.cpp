@@ -2,14 +2,11 @@
 // them, on the real recordings and on small files written here; exit codes, stdout and stderr.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,6 +17,7 @@
 #include "asr_ism/synthetic_demonstration.hpp"
 #include "asr_ism/testing/recordings_skip.hpp"
 #include "asr_ism/testing/temp_dir.hpp"
+#include "asr_ism/testing/tool_run.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 
 #ifndef ISM_TOOL
@@ -38,66 +36,14 @@ constexpr char kPrefix[] = "asr_ism_tool";
 
 // ---- running the tool ----
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string out;
-  std::vector<std::string> err;  // stderr, line by line
-};
+using asr_ism::testing::describe;
+using asr_ism::testing::expectInputError;
+using asr_ism::testing::expectSuccess;
+using asr_ism::testing::lines;
+using asr_ism::testing::ToolRun;
 
-std::string shellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text)
-    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream stream(text);
-  for (std::string line; std::getline(stream, line);)
-    result.push_back(line);
-  return result;
-}
-
-// Runs `ism arguments...` with no standard input; stdout and stderr go through files in `dir`.
 ToolRun runIsm(const TempDir& dir, const std::vector<std::string>& arguments) {
-  std::string command = shellQuoted(ISM_TOOL);
-  for (const std::string& argument : arguments)
-    command += " " + shellQuoted(argument);
-  const std::string out = dir.file("ism.stdout");
-  const std::string err = dir.file("ism.stderr");
-  command += " < /dev/null > " + shellQuoted(out) + " 2> " + shellQuoted(err);
-  const int status = std::system(command.c_str());
-  ToolRun run;
-  EXPECT_TRUE(status != -1 && WIFEXITED(status)) << command << " did not exit normally";
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = fileBytes(out);
-  run.err = lines(fileBytes(err));
-  return run;
-}
-
-std::string describe(const ToolRun& run) {
-  std::string text =
-      "exit code " + std::to_string(run.exit_code) + "\nstdout:\n" + run.out + "stderr:\n";
-  for (const std::string& line : run.err)
-    text += line + "\n";
-  return text;
-}
-
-void expectSuccess(const ToolRun& run) {
-  EXPECT_EQ(run.exit_code, 0) << describe(run);
-  EXPECT_TRUE(run.err.empty()) << describe(run);
-}
-
-// Bad input: exit code 1, nothing on stdout, exactly one line on stderr that names every one of
-// `named` (the offending file, scene, object...).
-void expectInputError(const ToolRun& run, const std::vector<std::string>& named) {
-  EXPECT_EQ(run.exit_code, 1) << describe(run);
-  EXPECT_TRUE(run.out.empty()) << describe(run);
-  ASSERT_EQ(run.err.size(), 1u) << describe(run);
-  EXPECT_EQ(run.err[0].rfind("ism ", 0), 0u) << run.err[0];
-  for (const std::string& name : named)
-    EXPECT_NE(run.err[0].find(name), std::string::npos) << "'" << name << "' in: " << run.err[0];
+  return asr_ism::testing::runTool(ISM_TOOL, dir, arguments);
 }
 
 // A usage error: exit code 2, one line naming `named`, then the usage text and nothing else.
