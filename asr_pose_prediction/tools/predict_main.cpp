@@ -1,0 +1,22 @@
+// `asr ism predict ...` (the executable ism_predict): recognise a scene, predict its missing objects.
+#include "predict_command.hpp"
+#include "single_command_main.hpp"
+
+namespace {
+
+const char* const kUsage =
+    "usage: asr ism predict --model M --scene NAME (--objects FILE | --demo DB --set K)\n"
+    "         [--samples N] [--seed S] [--instances K] [--object TYPE[:ID]] [--json] [--summary]\n"
+    "  recognises the scene in the objects and predicts poses of every object the best\n"
+    "  instance lacks (N poses per object, default 100; seed S, default 0). --instances K\n"
+    "  predicts from the best K instances, poses split by confidence; --object predicts that\n"
+    "  object only; --summary prints each object's mean position and spread instead of the\n"
+    "  poses (with --json: adds a summary per object).\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Errors read "ism predict: ...", as the user typed `asr ism predict`.
+  return asr_pose_prediction::tools::runSingleCommandMain(
+      "ism", "predict", kUsage, asr_pose_prediction::tools::runPredict, argc, argv);
+}
