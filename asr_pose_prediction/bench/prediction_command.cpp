@@ -30,7 +30,7 @@ PredictionBenchmarkSettings settingsFrom(const CommandLine& options) {
   settings.accuracy_samples = count(options, "accuracy-samples", settings.accuracy_samples, 1);
   settings.timing_sets = count(options, "timing-sets", settings.timing_sets, 1);
   settings.accuracy_sets = count(options, "accuracy-sets", settings.accuracy_sets, 0);
-  settings.repetitions = static_cast<int>(count(options, "repetitions", 10, 1));
+  settings.repetitions = static_cast<int>(count(options, "repetitions", settings.repetitions, 1));
   const long long seed = options.integer("seed", settings.seed);
   if (seed > std::numeric_limits<std::uint32_t>::max())
     throw UsageError{"--seed must be below 2^32"};
