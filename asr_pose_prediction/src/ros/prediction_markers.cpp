@@ -1,0 +1,85 @@
+#include "asr_pose_prediction/ros/prediction_markers.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+
+namespace asr_pose_prediction::ros_interface {
+
+std_msgs::ColorRGBA objectTypeColor(const std::string& type, double alpha) {
+  // FNV-1a: a hash that is the same on every platform and run (std::hash is not).
+  std::uint32_t hash = 2166136261u;
+  for (unsigned char c : type)
+    hash = (hash ^ c) * 16777619u;
+  const double hue = (hash % 360u) / 60.0;  // sector 0..6
+  const double rising = hue - std::floor(hue);
+  const double r[] = {1, 1 - rising, 0, 0, rising, 1};
+  const double g[] = {rising, 1, 1, 1 - rising, 0, 0};
+  const double b[] = {0, 0, rising, 1, 1, 1 - rising};
+  const int sector = static_cast<int>(hue) % 6;
+  std_msgs::ColorRGBA color;
+  color.r = static_cast<float>(r[sector]);
+  color.g = static_cast<float>(g[sector]);
+  color.b = static_cast<float>(b[sector]);
+  color.a = static_cast<float>(alpha);
+  return color;
+}
+
+visualization_msgs::MarkerArray predictionMarkers(
+    const std::vector<asr_msgs::PredictedPoseCloud>& clouds, const PredictionMarkerStyle& style) {
+  visualization_msgs::MarkerArray markers;
+  visualization_msgs::Marker clear;
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  if (!clouds.empty())
+    clear.header = clouds.front().header;
+  markers.markers.push_back(clear);
+
+  // Clouds of several instances may hold the same object: ids count on per namespace.
+  std::map<std::string, int> next_id;
+  for (const asr_msgs::PredictedPoseCloud& cloud : clouds) {
+    for (const asr_msgs::PredictedObjectPoses& object : cloud.objects) {
+      const std::string name =
+          object.instance_id.empty() ? object.type : object.type + ":" + object.instance_id;
+      const std::string ns = cloud.scene + "/" + name;
+      const std_msgs::ColorRGBA color = objectTypeColor(object.type, style.alpha);
+      int& id = next_id[ns];
+      geometry_msgs::Point mean;
+      for (const geometry_msgs::Pose& pose : object.poses) {
+        visualization_msgs::Marker arrow;
+        arrow.header = cloud.header;
+        arrow.ns = ns;
+        arrow.id = id++;
+        arrow.type = visualization_msgs::Marker::ARROW;
+        arrow.action = visualization_msgs::Marker::ADD;
+        arrow.pose = pose;
+        arrow.scale.x = style.arrow_length;
+        arrow.scale.y = style.arrow_length * 0.15;
+        arrow.scale.z = style.arrow_length * 0.15;
+        arrow.color = color;
+        markers.markers.push_back(arrow);
+        mean.x += pose.position.x / object.poses.size();
+        mean.y += pose.position.y / object.poses.size();
+        mean.z += pose.position.z / object.poses.size();
+      }
+      if (object.poses.empty())
+        continue;
+      visualization_msgs::Marker label;
+      label.header = cloud.header;
+      label.ns = ns;
+      label.id = id++;
+      label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
+      label.action = visualization_msgs::Marker::ADD;
+      label.pose.position = mean;
+      label.pose.position.z += 3 * style.arrow_length;
+      label.pose.orientation.w = 1.0;
+      label.scale.z = style.arrow_length;
+      label.color = color;
+      label.color.a = 1.0;
+      label.text = name + " (" + cloud.scene + ")";
+      markers.markers.push_back(label);
+    }
+  }
+  return markers;
+}
+
+}  // namespace asr_pose_prediction::ros_interface
