@@ -43,9 +43,9 @@ void measureSet(const asr_ism::Demonstration& demonstration, std::size_t step,
   const asr_ism::Configuration configuration = demonstration.configuration(step);
   ++row.sets;
   for (std::size_t left_out = 0; left_out < configuration.size(); ++left_out) {
-    const LeftOutPrediction outcome =
-        predictLeftOutObject(recognizer, predictor, configuration, left_out,
-                             settings.accuracy_samples, settings.seed + static_cast<std::uint32_t>(step));
+    const LeftOutPrediction outcome = predictLeftOutObject(
+        recognizer, predictor, configuration, left_out, settings.accuracy_samples,
+        settings.seed + static_cast<std::uint32_t>(step));
     ++row.cases;
     if (!outcome.instance_found) {
       ++row.no_instance;

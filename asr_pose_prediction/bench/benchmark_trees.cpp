@@ -11,8 +11,8 @@ std::vector<BenchmarkTree> learnStarAndComplete(const asr_ism::Demonstration& de
   const RelationTopology star =
       RelationTopology::star(objects, asr_ism_tree::chooseStarCenter(demonstration));
   return {{"star", asr_ism_tree::generateIsmTree(demonstration, star, {})},
-          {"complete", asr_ism_tree::generateIsmTree(
-                           demonstration, RelationTopology::complete(objects), {})}};
+          {"complete",
+           asr_ism_tree::generateIsmTree(demonstration, RelationTopology::complete(objects), {})}};
 }
 
 }  // namespace asr_pose_prediction::bench

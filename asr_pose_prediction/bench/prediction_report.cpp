@@ -20,7 +20,8 @@ std::string timingNote(const PredictionBenchmarkSettings& settings) {
   return std::to_string(settings.samples) +
          " poses of every object of the scene from one instance (PosePredictor::predict, the "
          "instance's objects\n dropped so that all are predicted); each instance timed " +
-         std::to_string(settings.repetitions) + " times, fastest kept; median and max over instances";
+         std::to_string(settings.repetitions) +
+         " times, fastest kept; median and max over instances";
 }
 
 void printRuntimeRows(std::ostream& out, const std::vector<RuntimeRow>& rows) {
@@ -85,9 +86,9 @@ void printAccuracyTable(std::ostream& out, const std::vector<AccuracyRow>& rows,
                         const std::vector<AccuracyRow>& combined,
                         const PredictionBenchmarkSettings& settings) {
   out << "Kitchen scenes: leave-one-out accuracy of predicted poses\n(every object of "
-      << (settings.accuracy_sets == 0 ? std::string("every recorded set")
-                                      : std::to_string(settings.accuracy_sets) +
-                                            " evenly spaced recorded sets")
+      << (settings.accuracy_sets == 0
+              ? std::string("every recorded set")
+              : std::to_string(settings.accuracy_sets) + " evenly spaced recorded sets")
       << " left out, the rest recognised, " << settings.accuracy_samples
       << " poses of it predicted from the best instance;\n distance = true position to the "
          "nearest predicted position; angle@nearest = orientation error of that pose;\n min angle "

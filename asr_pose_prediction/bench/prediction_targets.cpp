@@ -25,10 +25,10 @@ std::vector<PredictionTarget> checkPredictionTargets(const std::vector<RuntimeRo
   for (const RuntimeRow& row : synthetic) {
     if (row.objects != 10 || row.steps != 400)
       continue;
-    targets.push_back({"synthetic 10 objects x 400 steps, " + row.topology + ": " +
-                           std::to_string(row.samples) + " poses of every object <= " +
-                           withUnit(kRuntimeLimitMs, "%.1f ms") + " (median)",
-                       withUnit(row.median_ms, "%.4f ms"), row.median_ms <= kRuntimeLimitMs});
+    targets.push_back(
+        {"synthetic 10 objects x 400 steps, " + row.topology + ": " + std::to_string(row.samples) +
+             " poses of every object <= " + withUnit(kRuntimeLimitMs, "%.1f ms") + " (median)",
+         withUnit(row.median_ms, "%.4f ms"), row.median_ms <= kRuntimeLimitMs});
   }
   for (const AccuracyRow& row : combined) {
     if (row.cases == 0)
@@ -70,7 +70,8 @@ void printPredictionTargets(std::ostream& out, const std::vector<PredictionTarge
 nlohmann::ordered_json targetsToJson(const std::vector<PredictionTarget>& targets) {
   nlohmann::ordered_json array = nlohmann::ordered_json::array();
   for (const PredictionTarget& target : targets)
-    array.push_back({{"target", target.target}, {"measured", target.measured}, {"met", target.met}});
+    array.push_back(
+        {{"target", target.target}, {"measured", target.measured}, {"met", target.met}});
   return array;
 }
 

@@ -97,7 +97,8 @@ std::vector<RuntimeRow> benchmarkSyntheticRuntime(const PredictionBenchmarkSetti
       const asr_ism::Demonstration demonstration =
           asr_ism::makeSyntheticDemonstration(objects, steps, settings.synthetic_seed);
       for (const BenchmarkTree& learned : learnStarAndComplete(demonstration))
-        rows.push_back(measure(demonstration, learned, settings.synthetic_configurations, settings));
+        rows.push_back(
+            measure(demonstration, learned, settings.synthetic_configurations, settings));
     }
     progress << "\n";
   }

@@ -25,8 +25,8 @@ PosePredictor::PosePredictor(const IsmTree& tree)
     path_names_.push_back(ismNames(tree, path));
     std::vector<std::size_t>& samplers = path_samplers_.emplace_back();
     for (const PredictionStep& step : path.steps) {
-      const auto [entry, added] = sampler_of_member.emplace(std::make_pair(step.ism, step.member),
-                                                            samplers_.size());
+      const auto [entry, added] =
+          sampler_of_member.emplace(std::make_pair(step.ism, step.member), samplers_.size());
       if (added) {
         const asr_ism::Ism& ism = tree.isms[step.ism];
         samplers_.emplace_back(ism.members[step.member],

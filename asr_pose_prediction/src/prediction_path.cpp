@@ -39,8 +39,8 @@ std::vector<PredictionPath> shortestPredictionPaths(const IsmTree& tree) {
   }
   for (std::size_t object = 0; object < objects.size(); ++object) {
     if (!found[object]) {
-      throw asr_ism::InputError("scene '" + tree.scene + "': object " +
-                                objects[object].toString() + " is not a leaf of any ISM");
+      throw asr_ism::InputError("scene '" + tree.scene + "': object " + objects[object].toString() +
+                                " is not a leaf of any ISM");
     }
   }
   return paths;

@@ -4,22 +4,9 @@
 #include <limits>
 
 #include "asr_ism/input_error.hpp"
+#include "asr_ism/portable_random.hpp"
 
 namespace asr_pose_prediction {
-
-std::uint32_t uniformBelow(std::mt19937& engine, std::uint32_t bound) {
-  std::uint64_t product = static_cast<std::uint64_t>(engine()) * bound;
-  auto low = static_cast<std::uint32_t>(product);
-  if (low < bound) {
-    // 2^32 mod bound of the 2^32 raw values would make the low results more likely: reject them.
-    const std::uint32_t threshold = static_cast<std::uint32_t>(-bound) % bound;
-    while (low < threshold) {
-      product = static_cast<std::uint64_t>(engine()) * bound;
-      low = static_cast<std::uint32_t>(product);
-    }
-  }
-  return static_cast<std::uint32_t>(product >> 32);
-}
 
 RelationSampler::RelationSampler(const asr_ism::IsmMember& member, const std::string& what) {
   if (member.relative_poses.empty())
@@ -39,7 +26,7 @@ RelationSampler::RelationSampler(const asr_ism::IsmMember& member, const std::st
 const asr_ism::Pose& RelationSampler::sample(std::mt19937& engine) const {
   if (member_in_reference_.size() == 1)
     return member_in_reference_.front();
-  const std::uint32_t step = uniformBelow(engine, cumulative_steps_.back());
+  const std::uint32_t step = asr_ism::uniformBelow(engine, cumulative_steps_.back());
   const auto chosen = std::upper_bound(cumulative_steps_.begin(), cumulative_steps_.end(), step);
   return member_in_reference_[static_cast<std::size_t>(chosen - cumulative_steps_.begin())];
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "asr_ism/portable_random.hpp"
 #include "asr_ism/testing/input_error_of.hpp"
 #include "asr_pose_prediction/confidence_split.hpp"
 #include "asr_pose_prediction/relation_sampler.hpp"
@@ -27,13 +28,13 @@ TEST(UniformBelow, StaysBelowTheBoundAndReachesEveryValue) {
   std::mt19937 engine(3);
   std::vector<int> seen(7, 0);
   for (int i = 0; i < 7000; ++i) {
-    const std::uint32_t value = uniformBelow(engine, 7);
+    const std::uint32_t value = asr_ism::uniformBelow(engine, 7);
     ASSERT_LT(value, 7u);
     ++seen[value];
   }
   for (int count : seen)
     EXPECT_NEAR(count, 1000, 150);
-  EXPECT_EQ(uniformBelow(engine, 1), 0u);
+  EXPECT_EQ(asr_ism::uniformBelow(engine, 1), 0u);
 }
 
 TEST(RelationSampler, DrawsRelativePosesInProportionToTheirStepCounts) {

@@ -11,6 +11,7 @@ namespace asr_pose_prediction {
 /// fractional parts, and among equal fractions (compared to 1e-9) to the earlier (better) instance.
 /// The counts always add up to `total`. If every confidence is 0, the split is even.
 /// Throws InputError for a negative or non-finite confidence.
-std::vector<std::size_t> splitByConfidence(std::size_t total, const std::vector<double>& confidences);
+std::vector<std::size_t> splitByConfidence(std::size_t total,
+                                           const std::vector<double>& confidences);
 
 }  // namespace asr_pose_prediction

@@ -30,8 +30,4 @@ class RelationSampler {
   std::vector<std::uint32_t> cumulative_steps_;  // inclusive prefix sums of step_count
 };
 
-/// An integer uniform in [0, bound) from raw 32-bit draws (Lemire's multiply-shift with
-/// rejection, so every value is exactly equally likely). bound must be > 0.
-std::uint32_t uniformBelow(std::mt19937& engine, std::uint32_t bound);
-
 }  // namespace asr_pose_prediction
