@@ -500,3 +500,79 @@ TEST_F(IsmToolOnSmallFiles, SecondSceneKeepsTheFirstLoadable) {
 
 }  // namespace
 }  // namespace asr_ism_tree
+
+namespace asr_ism_tree {
+namespace {
+
+// ---- select-topology ----
+
+std::vector<std::string> selectArguments(const std::string& demo, const std::string& scene,
+                                         const TempDir& dir) {
+  return {"select-topology",
+          "--demo",
+          demo,
+          "--scene",
+          scene,
+          "--topology-out",
+          dir.file("topology.txt"),
+          "--model",
+          dir.file("model.sqlite"),
+          "--tests",
+          "60",
+          "--max-evaluations",
+          "12",
+          "--seed",
+          "3"};
+}
+
+TEST_F(IsmToolOnRecordings, SelectTopologyWritesATopologyThatLearnReadsBack) {
+  const std::string demo = recording("story_2.sqlite");
+  std::vector<std::string> arguments = selectArguments(demo, "Getraenke_Regal", dir_);
+  arguments.insert(arguments.end(), {"--tests-out", dir_.file("tests.sqlite")});
+  const ToolRun run = runIsm(dir_, arguments);
+  EXPECT_EQ(run.exit_code, 0) << describe(run);
+  EXPECT_NE(run.out.find("optimised"), std::string::npos) << run.out;
+  // Progress goes to stderr while it runs.
+  ASSERT_FALSE(run.err.empty());
+  EXPECT_NE(run.err[0].find("topologies"), std::string::npos) << run.err[0];
+  const IsmTree selected = sqlite::loadIsmTree(dir_.file("model.sqlite"), "Getraenke_Regal");
+  EXPECT_TRUE(selected.topology.isConnected());
+
+  // The topology file is what `learn --topology FILE` reads; the stored tests repeat the run.
+  const std::string relearned = dir_.file("relearned.sqlite");
+  expectSuccess(
+      runIsm(dir_, learnArguments(demo, "Getraenke_Regal", dir_.file("topology.txt"), relearned)));
+  EXPECT_EQ(sqlite::loadIsmTree(relearned, "Getraenke_Regal").topology, selected.topology);
+  std::vector<std::string> repeat = selectArguments(demo, "Getraenke_Regal", dir_);
+  repeat[6] = dir_.file("topology2.txt");
+  repeat[8] = dir_.file("model2.sqlite");
+  repeat.insert(repeat.end(), {"--tests-in", dir_.file("tests.sqlite")});
+  const ToolRun again = runIsm(dir_, repeat);
+  EXPECT_EQ(again.exit_code, 0) << describe(again);
+  EXPECT_EQ(fileBytes(dir_.file("topology2.txt")), fileBytes(dir_.file("topology.txt")));
+}
+
+TEST_F(IsmToolOnRecordings, SelectTopologyBadInputIsNamed) {
+  const std::string demo = recording("story_2.sqlite");
+  std::vector<std::string> zero = selectArguments(demo, "Getraenke_Regal", dir_);
+  zero[10] = "0";  // --tests 0
+  const ToolRun no_tests = runIsm(dir_, zero);
+  EXPECT_EQ(no_tests.exit_code, 2) << describe(no_tests);
+  ASSERT_FALSE(no_tests.err.empty());
+  EXPECT_NE(no_tests.err[0].find("--tests"), std::string::npos) << no_tests.err[0];
+
+  const std::string disconnected =
+      dir_.write("start.txt",
+                 "Cup:011021054100 marker_10:052052051100\nMultivitaminJuice:0 Sprudelflasche:0\n");
+  std::vector<std::string> with_start = selectArguments(demo, "Getraenke_Regal", dir_);
+  with_start.insert(with_start.end(), {"--start", disconnected});
+  expectInputError(runIsm(dir_, with_start), {disconnected, "not connected"});
+
+  const std::string unknown = dir_.write("unknown.txt", "Teapot:0 Cup:011021054100\n");
+  with_start.back() = unknown;
+  expectInputError(runIsm(dir_, with_start), {unknown, "Teapot"});
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("model.sqlite")));
+}
+
+}  // namespace
+}  // namespace asr_ism_tree

@@ -9,5 +9,6 @@ namespace asr_ism_tree::tools {
 int runLearn(const std::vector<std::string>& arguments);
 int runInfo(const std::vector<std::string>& arguments);
 int runRecognize(const std::vector<std::string>& arguments);
+int runSelectTopology(const std::vector<std::string>& arguments);
 
 }  // namespace asr_ism_tree::tools

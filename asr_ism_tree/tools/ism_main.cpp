@@ -10,13 +10,20 @@ const char* const kUsage =
     "  learn      --demo DB --scene NAME --topology star|complete|FILE [--star-center TYPE[:ID]]\n"
     "             --model OUT [--bin-size M] [--max-angle-deg D]\n"
     "  info       --model M [--scene NAME]\n"
-    "  recognize  --model M --scene NAME (--objects FILE | --demo DB --set K) [--json]\n";
+    "  recognize  --model M --scene NAME (--objects FILE | --demo DB --set K) [--json]\n"
+    "  select-topology --demo DB --scene NAME --topology-out FILE --model OUT [--tests N]\n"
+    "             [--seed S] [--alpha A] [--beta B] [--max-height H] [--max-evaluations E]\n"
+    "             [--method hill-climbing|annealing] [--start FILE] [--threads T]\n"
+    "             [--tests-in DB | --tests-out DB] [--bin-size M] [--max-angle-deg D]\n";
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace asr_ism_tree::tools;
-  return asr_ism_tree::cli::runCommandMain(
-      "ism", kUsage, {{"learn", runLearn}, {"info", runInfo}, {"recognize", runRecognize}}, argc,
-      argv);
+  return asr_ism_tree::cli::runCommandMain("ism", kUsage,
+                                           {{"learn", runLearn},
+                                            {"info", runInfo},
+                                            {"recognize", runRecognize},
+                                            {"select-topology", runSelectTopology}},
+                                           argc, argv);
 }

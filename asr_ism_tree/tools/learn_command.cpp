@@ -5,6 +5,7 @@
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/cli/object_lookup.hpp"
+#include "asr_ism_tree/cli/recognition_options.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/topology_file.hpp"
@@ -24,15 +25,7 @@ int runLearn(const std::vector<std::string>& arguments) {
   const std::string scene = options.required("scene");
   const std::string topology_spec = options.required("topology");
   const std::string model_path = options.required("model");
-  asr_ism::IsmRecognitionParameters parameters;
-  parameters.bin_size = options.number("bin-size", parameters.bin_size);
-  const double max_angle_deg = options.number("max-angle-deg", 30.0);
-  if (!(parameters.bin_size > 0.0))
-    throw UsageError{"--bin-size must be > 0"};
-  if (!(max_angle_deg > 0.0 && max_angle_deg <= 180.0)) {
-    throw UsageError{"--max-angle-deg must be in (0, 180]"};
-  }
-  parameters.max_angle_deviation = max_angle_deg * M_PI / 180.0;
+  const asr_ism::IsmRecognitionParameters parameters = cli::recognitionParametersFrom(options);
   if (options.has("star-center") && topology_spec != "star") {
     throw UsageError{"--star-center only applies to --topology star"};
   }

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "asr_ism_tree/topology_selection/topology_evaluation.hpp"
+
+namespace asr_ism_tree {
+
+/// The cost the search minimises: alpha * normalised errors + beta * normalised work, where errors
+/// = numFPs (share of invalid configurations accepted) + the share of valid configurations
+/// rejected: without the second term the search would favour sparse chains that reject almost
+/// everything. Each term is normalised to [0, 1] between the best and worst of the star and
+/// complete topologies (the
+/// extremes of the search space: the star is fastest and the least strict, the complete topology
+/// slowest and, by construction of the labels, without false positives). Values outside the
+/// range are not clamped, so a topology worse than both extremes costs more than 1 per term.
+class TopologyCost {
+ public:
+  TopologyCost(const TopologyMeasures& star, const TopologyMeasures& complete, double alpha,
+               double beta);
+
+  double operator()(const TopologyMeasures& measures) const;
+
+  /// (value - low) / (high - low); 0 when high == low (the term cannot tell topologies apart).
+  static double normalised(double value, double low, double high);
+
+  /// numFPs + share of valid configurations rejected.
+  static double errors(const TopologyMeasures& measures);
+
+ private:
+  double alpha_;
+  double beta_;
+  double error_low_, error_high_;
+  double work_low_, work_high_;
+};
+
+}  // namespace asr_ism_tree

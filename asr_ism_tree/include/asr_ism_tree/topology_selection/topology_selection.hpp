@@ -1,0 +1,78 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "asr_ism/demonstration.hpp"
+#include "asr_ism/ism_recognizer.hpp"
+#include "asr_ism_tree/relation_topology.hpp"
+#include "asr_ism_tree/topology_selection/test_configurations.hpp"
+#include "asr_ism_tree/topology_selection/topology_evaluation.hpp"
+
+namespace asr_ism_tree {
+
+enum class TopologySearchMethod { kHillClimbing, kSimulatedAnnealing };
+
+struct TopologySelectionOptions {
+  std::size_t test_count = 600;  // test configurations generated (valid + invalid)
+  std::uint32_t seed = 1;
+  double alpha = 1.0;       // weight of normalised numFPs in the cost
+  double beta = 1.0;        // weight of normalised work (avgDur) in the cost
+  double threshold = 0.99;  // confidence at which a configuration counts as recognised
+  int max_tree_height = 0;  // < 1: no limit
+  unsigned threads = 0;     // 0: all cores
+  asr_ism::IsmRecognitionParameters parameters;
+  TopologySearchMethod method = TopologySearchMethod::kHillClimbing;
+  /// The search stops after evaluating this many distinct topologies (stars and the complete
+  /// topology included), or earlier when it cannot improve any more.
+  std::size_t max_evaluations = 160;
+  /// Neighbours are evaluated in parallel batches of this size, in a seeded random order; hill
+  /// climbing takes the best of the first batch that improves, annealing the first accepted.
+  /// Not tied to the thread count, so that the result does not depend on it.
+  std::size_t batch_size = 8;
+  /// Hill climbing: new starts (the best topology so far with random relations exchanged) after
+  /// a local optimum.
+  std::size_t restarts = 2;
+  /// Simulated annealing: the start temperature in cost units and its factor per step.
+  double start_temperature = 0.2;
+  double cooling = 0.9;
+  /// Start from this topology instead of the best star (must be connected).
+  const RelationTopology* start = nullptr;
+};
+
+struct TopologySelectionProgress {
+  std::size_t evaluated = 0;
+  std::size_t max_evaluations = 0;
+  double current_cost = 0.0;
+  double best_cost = 0.0;
+  double seconds_elapsed = 0.0;
+  double seconds_left_estimate = 0.0;
+};
+
+struct TopologySelectionResult {
+  RelationTopology topology;  // the optimised topology
+  TopologyMeasures measures;  // and how it does
+  double cost = 0.0;
+  RelationTopology star;  // the star that normalises the cost (centre by chooseStarCenter)
+  TopologyMeasures star_measures;
+  TopologyMeasures complete_measures;
+  std::size_t evaluated = 0;  // distinct topologies evaluated
+  TestConfigurations tests;
+};
+
+/// Relation Topology Selection: a local search over connected topologies of the demonstration's
+/// objects for one whose tree has few false positives (numFPs) and little recognition work,
+/// by the cost alpha * normalised numFPs + beta * normalised work (see TopologyCost). Starts
+/// from the best star (every object tried as centre) or options.start; neighbours add, remove or
+/// exchange one relation (topologyNeighbours); every topology is evaluated at most once, in
+/// parallel batches on `threads` threads. Deterministic for a seed: the cost uses the
+/// machine-independent work, never the wall-clock time, and results do not depend on the thread
+/// count. `tests`, if given, replaces generating test configurations. Throws InputError for bad
+/// options (0 tests, negative weights) or a demonstration of fewer than two objects.
+TopologySelectionResult selectTopology(
+    const asr_ism::Demonstration& demonstration, const TopologySelectionOptions& options,
+    const std::function<void(const TopologySelectionProgress&)>& progress = {},
+    const TestConfigurations* tests = nullptr);
+
+}  // namespace asr_ism_tree

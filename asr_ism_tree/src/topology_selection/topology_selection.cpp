@@ -1,0 +1,315 @@
+#include "asr_ism_tree/topology_selection/topology_selection.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+
+#include "asr_ism/input_error.hpp"
+#include "asr_ism/portable_random.hpp"
+#include "asr_ism/thread_pool.hpp"
+#include "asr_ism_tree/star_center.hpp"
+#include "asr_ism_tree/topology_selection/topology_cost.hpp"
+#include "asr_ism_tree/topology_selection/topology_neighbours.hpp"
+#include "asr_ism_tree/tree_generation.hpp"
+
+namespace asr_ism_tree {
+namespace {
+
+using asr_ism::InputError;
+using Clock = std::chrono::steady_clock;
+
+// One character per object pair: the identity of a topology in the memo.
+std::string keyOf(const RelationTopology& topology) {
+  std::string key;
+  for (std::size_t a = 0; a < topology.objectCount(); ++a) {
+    for (std::size_t b = a + 1; b < topology.objectCount(); ++b)
+      key += topology.hasRelation(a, b) ? '1' : '0';
+  }
+  return key;
+}
+
+struct Evaluated {
+  TopologyMeasures measures;
+  double cost = std::numeric_limits<double>::infinity();
+};
+
+// Evaluates topologies at most once each, batches in parallel, and reports progress.
+class Evaluator {
+ public:
+  Evaluator(const asr_ism::Demonstration& demonstration, const TestConfigurations& tests,
+            const TopologySelectionOptions& options,
+            const std::function<void(const TopologySelectionProgress&)>& progress)
+      : demonstration_(demonstration),
+        tests_(tests),
+        options_(options),
+        progress_(progress),
+        pool_(options.threads),
+        started_(Clock::now()) {}
+
+  // Costs the topologies evaluated so far too.
+  void setCost(const TopologyCost& cost) {
+    cost_ = std::make_unique<TopologyCost>(cost);
+    for (auto& [key, entry] : memo_)
+      entry.cost = (*cost_)(entry.measures);
+  }
+
+  bool budgetLeft() const { return memo_.size() < options_.max_evaluations; }
+  std::size_t evaluated() const { return memo_.size(); }
+
+  // Measures (and costs, once the cost is set) of every topology, evaluating the ones not seen
+  // before in parallel. Topologies beyond the budget are left out of the result (nullptr).
+  std::vector<const Evaluated*> evaluate(const std::vector<RelationTopology>& topologies) {
+    std::vector<std::size_t> fresh;
+    std::vector<std::string> keys;
+    for (std::size_t i = 0; i < topologies.size(); ++i) {
+      keys.push_back(keyOf(topologies[i]));
+      if (!memo_.count(keys[i]) &&
+          std::find_if(fresh.begin(), fresh.end(),
+                       [&](std::size_t j) { return keys[j] == keys[i]; }) == fresh.end() &&
+          memo_.size() + fresh.size() < options_.max_evaluations)
+        fresh.push_back(i);
+    }
+    std::vector<TopologyMeasures> measured(fresh.size());
+    pool_.parallelFor(fresh.size(), [&](std::size_t k) {
+      measured[k] = evaluateTopology(demonstration_, topologies[fresh[k]], tests_,
+                                     options_.parameters, options_.threshold);
+    });
+    for (std::size_t k = 0; k < fresh.size(); ++k) {
+      Evaluated& entry = memo_[keys[fresh[k]]];
+      entry.measures = measured[k];
+      if (cost_)
+        entry.cost = (*cost_)(entry.measures);
+    }
+    std::vector<const Evaluated*> result;
+    for (const std::string& key : keys) {
+      const auto found = memo_.find(key);
+      result.push_back(found == memo_.end() ? nullptr : &found->second);
+    }
+    return result;
+  }
+
+  void report(double current_cost, double best_cost) const {
+    if (!progress_)
+      return;
+    TopologySelectionProgress progress;
+    progress.evaluated = memo_.size();
+    progress.max_evaluations = options_.max_evaluations;
+    progress.current_cost = current_cost;
+    progress.best_cost = best_cost;
+    progress.seconds_elapsed = std::chrono::duration<double>(Clock::now() - started_).count();
+    progress.seconds_left_estimate =
+        memo_.empty()
+            ? 0.0
+            : progress.seconds_elapsed / memo_.size() *
+                  (options_.max_evaluations - std::min(options_.max_evaluations, memo_.size()));
+    progress_(progress);
+  }
+
+ private:
+  const asr_ism::Demonstration& demonstration_;
+  const TestConfigurations& tests_;
+  const TopologySelectionOptions& options_;
+  const std::function<void(const TopologySelectionProgress&)>& progress_;
+  asr_ism::ThreadPool pool_;
+  Clock::time_point started_;
+  std::unique_ptr<TopologyCost> cost_;
+  std::map<std::string, Evaluated> memo_;
+};
+
+struct Candidate {
+  RelationTopology topology;
+  double cost = std::numeric_limits<double>::infinity();
+};
+
+// The neighbours in a seeded random order: first those that add or remove a relation, then the
+// exchanges, which are many more (r * (n(n-1)/2 - r) for r relations) and rarely needed: a climb
+// reaches most improvements through the few additions and removals first.
+std::vector<RelationTopology> shuffledNeighbours(const RelationTopology& topology,
+                                                 int max_height,
+                                                 asr_ism::PortableRandom& random) {
+  std::vector<RelationTopology> neighbours = topologyNeighbours(topology, max_height);
+  const auto exchanges = std::stable_partition(
+      neighbours.begin(), neighbours.end(), [&](const RelationTopology& neighbour) {
+        return neighbour.relationCount() != topology.relationCount();
+      });
+  auto shuffle = [&](auto begin, auto end) {
+    for (auto i = end - begin; i > 1; --i)
+      std::swap(begin[i - 1], begin[random.below(static_cast<std::uint32_t>(i))]);
+  };
+  shuffle(neighbours.begin(), exchanges);
+  shuffle(exchanges, neighbours.end());
+  return neighbours;
+}
+
+// Steepest descent over batches: the best improving neighbour of the first batch that has one.
+Candidate climb(Candidate current, Evaluator& evaluator, const TopologySelectionOptions& options,
+                std::size_t batch_size, asr_ism::PortableRandom& random, Candidate& best) {
+  while (evaluator.budgetLeft()) {
+    const std::vector<RelationTopology> neighbours =
+        shuffledNeighbours(current.topology, options.max_tree_height, random);
+    bool moved = false;
+    for (std::size_t first = 0; first < neighbours.size() && !moved; first += batch_size) {
+      const std::vector<RelationTopology> batch(
+          neighbours.begin() + first,
+          neighbours.begin() + std::min(neighbours.size(), first + batch_size));
+      const std::vector<const Evaluated*> results = evaluator.evaluate(batch);
+      std::size_t chosen = batch.size();
+      double chosen_cost = current.cost - 1e-12;
+      for (std::size_t i = 0; i < batch.size(); ++i) {
+        if (results[i] && results[i]->cost < chosen_cost) {
+          chosen = i;
+          chosen_cost = results[i]->cost;
+        }
+      }
+      if (chosen < batch.size()) {
+        current = {batch[chosen], chosen_cost};
+        moved = true;
+        if (current.cost < best.cost - 1e-12)
+          best = current;
+      }
+      evaluator.report(current.cost, best.cost);
+      if (!evaluator.budgetLeft())
+        break;
+    }
+    if (!moved)
+      break;  // a local optimum (or the budget is spent)
+  }
+  return current;
+}
+
+// A new start near the best: `count` of its relations exchanged for absent ones, kept connected.
+RelationTopology perturbed(const RelationTopology& topology, std::size_t count, int max_height,
+                           asr_ism::PortableRandom& random) {
+  RelationTopology result = topology;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::vector<RelationTopology> neighbours = topologyNeighbours(result, max_height);
+    if (neighbours.empty())
+      break;
+    result = neighbours[random.below(static_cast<std::uint32_t>(neighbours.size()))];
+  }
+  return result;
+}
+
+Candidate anneal(Candidate current, Evaluator& evaluator, const TopologySelectionOptions& options,
+                 std::size_t batch_size, asr_ism::PortableRandom& random, Candidate& best) {
+  double temperature = options.start_temperature;
+  std::size_t stale = 0;
+  while (evaluator.budgetLeft() && stale < 50) {
+    const std::vector<RelationTopology> neighbours =
+        shuffledNeighbours(current.topology, options.max_tree_height, random);
+    if (neighbours.empty())
+      break;
+    // One batch per round, evaluated in parallel, then accepted or not in a fixed order.
+    const std::size_t size = std::min(neighbours.size(), batch_size);
+    const std::vector<RelationTopology> batch(neighbours.begin(), neighbours.begin() + size);
+    const std::size_t before = evaluator.evaluated();
+    const std::vector<const Evaluated*> results = evaluator.evaluate(batch);
+    stale = evaluator.evaluated() == before ? stale + 1 : 0;
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      if (!results[i])
+        continue;
+      const double delta = results[i]->cost - current.cost;
+      const double draw = random.uniform();
+      if (delta < 0 || (temperature > 0 && draw < std::exp(-delta / temperature))) {
+        current = {batch[i], results[i]->cost};
+        if (current.cost < best.cost - 1e-12)
+          best = current;
+        break;
+      }
+    }
+    temperature *= options.cooling;
+    evaluator.report(current.cost, best.cost);
+  }
+  return current;
+}
+
+}  // namespace
+
+TopologySelectionResult selectTopology(
+    const asr_ism::Demonstration& demonstration, const TopologySelectionOptions& options,
+    const std::function<void(const TopologySelectionProgress&)>& progress,
+    const TestConfigurations* given_tests) {
+  demonstration.validate("relation topology selection");
+  const std::vector<ObjectKey>& objects = demonstration.objects();
+  if (objects.size() < 2)
+    throw InputError("scene '" + demonstration.scene() +
+                     "': relation topology selection needs at least two objects");
+  if (options.max_evaluations < 2)
+    throw InputError("relation topology selection needs at least 2 evaluations (got " +
+                     std::to_string(options.max_evaluations) + ")");
+  if (options.start) {
+    options.start->requireConnected("the start topology");
+    if (options.start->objects() != objects)
+      throw InputError("the start topology's objects differ from those of scene '" +
+                       demonstration.scene() + "'");
+  }
+
+  TopologySelectionResult result;
+  const RelationTopology complete = RelationTopology::complete(objects);
+  if (given_tests) {
+    result.tests = *given_tests;
+  } else {
+    const IsmTree complete_tree = generateIsmTree(demonstration, complete, options.parameters);
+    result.tests = generateTestConfigurations(demonstration, complete_tree, options.test_count,
+                                              options.seed, options.threshold);
+  }
+
+  Evaluator evaluator(demonstration, result.tests, options, progress);
+  result.star = RelationTopology::star(objects, chooseStarCenter(demonstration));
+  {
+    const auto extremes = evaluator.evaluate({result.star, complete});
+    result.star_measures = extremes[0]->measures;
+    result.complete_measures = extremes[1]->measures;
+  }
+  const TopologyCost cost(result.star_measures, result.complete_measures, options.alpha,
+                          options.beta);
+  evaluator.setCost(cost);
+
+  // The start: the given topology, or the best of all stars.
+  std::vector<RelationTopology> starts;
+  if (options.start) {
+    starts.push_back(*options.start);
+  } else {
+    for (std::size_t center = 0; center < objects.size(); ++center)
+      starts.push_back(RelationTopology::star(objects, center));
+  }
+  Candidate best;
+  {
+    const auto results = evaluator.evaluate(starts);
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+      const double start_cost = results[i] ? cost(results[i]->measures) : best.cost;
+      if (start_cost < best.cost - 1e-12)
+        best = {starts[i], start_cost};
+    }
+    if (!std::isfinite(best.cost))  // the budget ended before any start: use the star
+      best = {result.star, cost(result.star_measures)};
+  }
+  evaluator.report(best.cost, best.cost);
+
+  asr_ism::PortableRandom random(options.seed ^ 0x5eedu);
+  const std::size_t batch_size = std::max<std::size_t>(1, options.batch_size);
+  if (options.method == TopologySearchMethod::kSimulatedAnnealing) {
+    anneal(best, evaluator, options, batch_size, random, best);
+  } else {
+    climb(best, evaluator, options, batch_size, random, best);
+    for (std::size_t restart = 0; restart < options.restarts && evaluator.budgetLeft(); ++restart) {
+      const RelationTopology start =
+          perturbed(best.topology, 2 + restart, options.max_tree_height, random);
+      const auto results = evaluator.evaluate({start});
+      if (!results[0])
+        break;
+      climb({start, results[0]->cost}, evaluator, options, batch_size, random, best);
+    }
+  }
+
+  result.topology = best.topology;
+  result.cost = best.cost;
+  result.measures = evaluator.evaluate({best.topology})[0]->measures;
+  result.evaluated = evaluator.evaluated();
+  return result;
+}
+
+}  // namespace asr_ism_tree
