@@ -1,6 +1,7 @@
 // `asr_bench <benchmark> ...`: performance benchmarks of the ISM tree engine.
 #include "asr_ism_tree/cli/command_main.hpp"
 #include "recognition_command.hpp"
+#include "topology_command.hpp"
 
 namespace {
 
@@ -18,6 +19,8 @@ const char* const kUsage =
 
 int main(int argc, char** argv) {
   return asr_ism_tree::cli::runCommandMain(
-      "asr_bench", kUsage, {{"recognition", asr_ism_tree::bench::runRecognitionCommand}}, argc,
-      argv);
+      "asr_bench", kUsage,
+      {{"recognition", asr_ism_tree::bench::runRecognitionCommand},
+       {"topology", asr_ism_tree::bench::runTopologyCommand}},
+      argc, argv);
 }

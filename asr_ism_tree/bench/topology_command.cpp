@@ -1,0 +1,246 @@
+#include "topology_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "asr_ism/input_error.hpp"
+#include "asr_ism_tree/cli/command_line.hpp"
+#include "asr_ism_tree/cli/line_plot.hpp"
+#include "asr_ism_tree/cli/recordings_folder.hpp"
+#include "synthetic_benchmark.hpp"
+#include "topology_benchmark.hpp"
+
+namespace asr_ism_tree::bench {
+namespace {
+
+using cli::CommandLine;
+using cli::UsageError;
+
+constexpr double kMaxOptimisedMs = 2.0;
+constexpr double kMaxTableSeconds = 20 * 60;
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+std::vector<std::string> splitCommas(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  for (std::string part; std::getline(stream, part, ',');) {
+    if (!part.empty())
+      parts.push_back(part);
+  }
+  return parts;
+}
+
+// Writes `content` to `path` whole (temporary file + rename).
+void writeFile(const std::string& path, const std::string& content) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream file(temporary);
+    file << content;
+    if (!file)
+      throw asr_ism::InputError("cannot write " + temporary);
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+std::string markdownTable(const std::vector<TopologyTableRow>& rows) {
+  std::ostringstream out;
+  out << "| scene | steps | objects | relations star / opt / complete | numFPs % star / opt / "
+         "complete | avgDur ms star / opt / complete | paper relations | paper numFPs % | paper "
+         "avgDur s | tests valid / invalid | topologies evaluated |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const TopologyTableRow& row : rows) {
+    out << "| " << row.scene << " | " << row.steps << " | " << row.objects << " | ";
+    for (int k = 0; k < 3; ++k)
+      out << row.measures[k].relations << (k < 2 ? " / " : " | ");
+    for (int k = 0; k < 3; ++k)
+      out << format("%.2f", 100 * row.measures[k].false_positive_rate) << (k < 2 ? " / " : " | ");
+    for (int k = 0; k < 3; ++k)
+      out << format("%.3f", row.measures[k].mean_ms) << (k < 2 ? " / " : " | ");
+    if (row.paper) {
+      for (int k = 0; k < 3; ++k)
+        out << row.paper->relations[k] << (k < 2 ? " / " : " | ");
+      for (int k = 0; k < 3; ++k)
+        out << format("%.2f", row.paper->false_positives_percent[k]) << (k < 2 ? " / " : " | ");
+      for (int k = 0; k < 3; ++k)
+        out << format("%.3f", row.paper->duration_s[k]) << (k < 2 ? " / " : " | ");
+    } else {
+      out << " | | | ";
+    }
+    out << row.valid_tests << " / " << row.invalid_tests << " | " << row.evaluated << " |\n";
+  }
+  return out.str();
+}
+
+std::string csvTable(const std::vector<TopologyTableRow>& rows) {
+  std::ostringstream out;
+  out << "scene,steps,objects,relations_star,relations_opt,relations_complete,numfps_star_pct,"
+         "numfps_opt_pct,numfps_complete_pct,avgdur_star_ms,avgdur_opt_ms,avgdur_complete_ms,"
+         "work_star,work_opt,work_complete,valid_tests,invalid_tests,evaluated,seconds,"
+         "paper_numfps_opt_pct,paper_avgdur_opt_s,optimised_relations\n";
+  for (const TopologyTableRow& row : rows) {
+    out << row.scene << "," << row.steps << "," << row.objects;
+    for (const auto& measures : row.measures)
+      out << "," << measures.relations;
+    for (const auto& measures : row.measures)
+      out << "," << 100 * measures.false_positive_rate;
+    for (const auto& measures : row.measures)
+      out << "," << measures.mean_ms;
+    for (const auto& measures : row.measures)
+      out << "," << measures.mean_work;
+    out << "," << row.valid_tests << "," << row.invalid_tests << "," << row.evaluated << ","
+        << row.seconds << ",";
+    if (row.paper)
+      out << row.paper->false_positives_percent[1] << "," << row.paper->duration_s[1];
+    else
+      out << ",";
+    out << ",\"" << row.topology << "\"\n";
+  }
+  return out.str();
+}
+
+nlohmann::ordered_json rowsToJson(const std::vector<TopologyTableRow>& rows) {
+  nlohmann::ordered_json array = nlohmann::ordered_json::array();
+  const char* names[3] = {"star", "optimised", "complete"};
+  for (const TopologyTableRow& row : rows) {
+    nlohmann::ordered_json entry = {{"scene", row.scene},
+                                    {"steps", row.steps},
+                                    {"objects", row.objects},
+                                    {"valid_tests", row.valid_tests},
+                                    {"invalid_tests", row.invalid_tests},
+                                    {"evaluated", row.evaluated},
+                                    {"seconds", row.seconds},
+                                    {"optimised_relations", row.topology}};
+    for (int k = 0; k < 3; ++k) {
+      entry[names[k]] = {{"relations", row.measures[k].relations},
+                         {"isms", row.measures[k].isms},
+                         {"height", row.measures[k].height},
+                         {"numfps_pct", 100 * row.measures[k].false_positive_rate},
+                         {"valid_recognised_pct", 100 * row.measures[k].true_positive_rate},
+                         {"avgdur_ms", row.measures[k].mean_ms},
+                         {"work", row.measures[k].mean_work}};
+    }
+    if (row.paper) {
+      entry["paper"] = {{"relations", row.paper->relations},
+                        {"numfps_pct", row.paper->false_positives_percent},
+                        {"avgdur_s", row.paper->duration_s}};
+    }
+    array.push_back(entry);
+  }
+  return array;
+}
+
+void plotRuntimes(const std::vector<TopologyRuntimePoint>& points, const std::string& path) {
+  cli::LinePlot plot;
+  plot.title = "Recognition with ISM trees of optimised topologies (synthetic scenes)";
+  plot.x_label = "objects in the scene";
+  plot.y_label = "mean recognition time [ms]";
+  int colour = 1;
+  for (std::size_t steps : syntheticStepCounts()) {
+    cli::PlotCurve curve;
+    curve.title = std::to_string(steps) + " steps";
+    curve.colour = colour++;
+    for (const TopologyRuntimePoint& point : points) {
+      if (point.steps == steps)
+        curve.points.push_back({static_cast<double>(point.objects), point.mean_ms});
+    }
+    if (!curve.points.empty())
+      plot.curves.push_back(std::move(curve));
+  }
+  cli::drawLinePlot(plot, path);
+}
+
+}  // namespace
+
+int runTopologyCommand(const std::vector<std::string>& arguments) {
+  const CommandLine options(arguments,
+                            {"out", "scenes", "recordings", "tests", "alpha", "beta",
+                             "max-evaluations", "seed", "synthetic-max-objects", "threads"},
+                            {"json", "no-synthetic"});
+  TopologySelectionOptions selection;
+  selection.test_count = static_cast<std::size_t>(options.integer("tests", 600));
+  if (selection.test_count == 0)
+    throw UsageError{"--tests must be at least 1"};
+  selection.alpha = options.number("alpha", selection.alpha);
+  selection.beta = options.number("beta", selection.beta);
+  selection.max_evaluations =
+      static_cast<std::size_t>(options.integer("max-evaluations", selection.max_evaluations));
+  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed));
+  selection.threads = static_cast<unsigned>(options.integer("threads", 0));
+  const std::size_t synthetic_max_objects =
+      static_cast<std::size_t>(options.integer("synthetic-max-objects", 8));
+  const std::string out_dir = options.optional("out", "out/topology");
+  std::filesystem::create_directories(out_dir);
+  std::ostream& progress = std::cerr;
+  const auto start = std::chrono::steady_clock::now();
+
+  std::vector<TopologyTableRow> rows;
+  const std::string recordings = cli::recordingsFolder(options, ASR_RECORDINGS_DIR);
+  if (!cli::isDirectory(recordings)) {
+    progress << "asr_bench: recordings folder '" << recordings
+             << "' not found; skipping the kitchen scenes (give --recordings DIR or set "
+                "ASR_RECORDINGS_DIR)\n";
+  } else {
+    progress << "relation topology selection for the kitchen scenes of " << recordings << "\n";
+    rows = benchmarkTopologies(recordings, splitCommas(options.optional("scenes", "")), selection,
+                               progress);
+  }
+  std::vector<TopologyRuntimePoint> points;
+  if (!options.flag("no-synthetic")) {
+    progress << "optimised trees of synthetic scenes (objects per step count)\n";
+    TopologySelectionOptions synthetic = selection;
+    synthetic.test_count = std::min<std::size_t>(selection.test_count, 200);
+    synthetic.max_evaluations = std::min<std::size_t>(selection.max_evaluations, 40);
+    points = benchmarkSyntheticTopologies(synthetic, synthetic_max_objects, progress);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  writeFile(out_dir + "/topology_table.md", markdownTable(rows));
+  writeFile(out_dir + "/topology_table.csv", csvTable(rows));
+  if (!points.empty())
+    plotRuntimes(points, out_dir + "/topology_runtime.png");
+
+  if (options.flag("json")) {
+    std::cout << rowsToJson(rows).dump(2) << "\n";
+  } else {
+    std::cout << markdownTable(rows);
+  }
+  std::ostream& report = options.flag("json") ? std::cerr : std::cout;
+  report << "\nTargets\n";
+  int met = 0, total = 0;
+  auto target = [&](bool ok, const std::string& text) {
+    ++total;
+    met += ok;
+    report << (ok ? "  met     " : "  MISSED  ") << text << "\n";
+  };
+  for (const TopologyTableRow& row : rows) {
+    if (row.paper) {
+      target(
+          100 * row.measures[1].false_positive_rate <= row.paper->false_positives_percent[1] + 1e-9,
+          row.scene + ": numFPs(optimised) " +
+              format("%.2f", 100 * row.measures[1].false_positive_rate) + " % <= the paper's " +
+              format("%.2f", row.paper->false_positives_percent[1]) + " %");
+    }
+    target(row.measures[1].mean_ms <= kMaxOptimisedMs, row.scene + ": avgDur(optimised) " +
+                                                           format("%.3f", row.measures[1].mean_ms) +
+                                                           " ms <= 2 ms");
+    target(row.measures[2].false_positive_rate == 0.0, row.scene + ": numFPs(complete) = 0");
+  }
+  target(seconds <= kMaxTableSeconds, "whole table " + format("%.0f", seconds) + " s <= 20 min");
+  report << "  " << met << " of " << total << " targets met\n"
+         << "table, CSV" << (points.empty() ? "" : " and plot") << " written to " << out_dir
+         << "\n";
+  return 0;
+}
+
+}  // namespace asr_ism_tree::bench
