@@ -16,8 +16,10 @@ macro(asr_add_rostests)
     add_rostest_gtest(${_asr_target} ${_asr_launch_file} ${_asr_source})
     # The test's own main() calls ros::init, so no gtest_main.
     target_link_libraries(${_asr_target} ${PROJECT_NAME}_ros)
+    # ASR_NODE_DIR: where the package's nodes are, for tests that start them themselves.
     target_compile_definitions(${_asr_target} PRIVATE
-      ASR_RECORDINGS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../../shared/data/asr_recordings")
+      ASR_RECORDINGS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/../../shared/data/asr_recordings"
+      ASR_NODE_DIR="${CATKIN_DEVEL_PREFIX}/${CATKIN_PACKAGE_BIN_DESTINATION}")
     # The nodes under test are built before the test runs.
     if(${PROJECT_NAME}_NODE_TARGETS)
       add_dependencies(${_asr_target} ${${PROJECT_NAME}_NODE_TARGETS})

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <asr_msgs/ObjectEstimateList.h>
+#include <asr_msgs/RecognizeScenes.h>
+#include <asr_msgs/ReloadModel.h>
+#include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "asr_ism/latest_estimates.hpp"
+#include "asr_ism/ros/estimate_intake.hpp"
+#include "asr_ism_tree/scene_models.hpp"
+
+namespace asr_ism_tree::ros_interface {
+
+/// The scene recogniser node. Parameters (private): model_files (list, required), scenes (list;
+/// empty: all), fixed_frame (map), continuous (true), rate (Hz, 10), estimate_timeout (s, 5; 0:
+/// never). Services recognize_scenes and reload_model; in continuous mode the latest estimate of
+/// every object from topic `objects` is recognised at `rate` and published on scene_instances
+/// and scene_markers. Rejected estimates are counted on ~rejected_estimates (latched).
+class SceneRecognizerNode {
+ public:
+  /// Reads and checks the parameters and loads the models: throws InputError naming the
+  /// parameter or file.
+  explicit SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node);
+
+ private:
+  bool recognize(asr_msgs::RecognizeScenes::Request& request,
+                 asr_msgs::RecognizeScenes::Response& response);
+  bool reload(asr_msgs::ReloadModel::Request& request, asr_msgs::ReloadModel::Response& response);
+  void receive(const asr_msgs::ObjectEstimateList& message);
+  void tick(const ros::TimerEvent& event);
+  void publishRejected();
+
+  ros::NodeHandle node_;
+  ros::NodeHandle private_node_;
+  std::vector<std::string> model_files_;
+  std::vector<std::string> scenes_;
+  double estimate_timeout_ = 5.0;
+
+  tf2_ros::Buffer buffer_;
+  tf2_ros::TransformListener listener_;
+  std::mutex mutex_;  // models_, intake_, latest_ (service and topic callbacks may overlap)
+  SceneModels models_;
+  asr_ism::ros_interface::EstimateIntake intake_;
+  asr_ism::LatestEstimates latest_;
+  ros::Time newest_stamp_;
+
+  ros::Publisher instances_publisher_;
+  ros::Publisher markers_publisher_;
+  ros::Publisher rejected_publisher_;
+  ros::Subscriber subscriber_;
+  ros::ServiceServer recognize_service_;
+  ros::ServiceServer reload_service_;
+  ros::Timer timer_;
+};
+
+}  // namespace asr_ism_tree::ros_interface

@@ -1,0 +1,148 @@
+#include "asr_ism_tree/ros/scene_recognizer_node.hpp"
+
+#include <asr_msgs/SceneInstanceList.h>
+#include <std_msgs/UInt32.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "asr_ism/input_error.hpp"
+#include "asr_ism/ros/node_parameters.hpp"
+#include "asr_ism_tree/ros/scene_instance_message.hpp"
+#include "asr_ism_tree/ros/scene_markers.hpp"
+
+namespace asr_ism_tree::ros_interface {
+
+using asr_ism::ros_interface::checkParameter;
+using asr_ism::ros_interface::optionalParameter;
+using asr_ism::ros_interface::stringListParameter;
+
+namespace {
+
+std::string fixedFrameOf(const ros::NodeHandle& private_node) {
+  const auto frame = optionalParameter<std::string>(private_node, "fixed_frame", "map");
+  checkParameter(private_node, "fixed_frame", !frame.empty(), "a frame name, not empty");
+  return frame;
+}
+
+}  // namespace
+
+SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node)
+    : node_(node),
+      private_node_(private_node),
+      listener_(buffer_),
+      intake_(buffer_, fixedFrameOf(private_node)) {
+  model_files_ = stringListParameter(private_node_, "model_files");
+  checkParameter(private_node_, "model_files", !model_files_.empty(),
+                 "set to the model files to load (a list, or one file)");
+  scenes_ = stringListParameter(private_node_, "scenes");
+  const bool continuous = optionalParameter<bool>(private_node_, "continuous", true);
+  const double rate = optionalParameter<double>(private_node_, "rate", 10.0);
+  checkParameter(private_node_, "rate", rate > 0.0 && rate <= 1000.0, "in (0, 1000] Hz");
+  estimate_timeout_ = optionalParameter<double>(private_node_, "estimate_timeout", 5.0);
+  checkParameter(private_node_, "estimate_timeout", estimate_timeout_ >= 0.0,
+                 ">= 0 s (0: estimates never expire)");
+  models_ = SceneModels::load(model_files_, scenes_);
+
+  instances_publisher_ = node_.advertise<asr_msgs::SceneInstanceList>("scene_instances", 10);
+  markers_publisher_ = node_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, true);
+  rejected_publisher_ = private_node_.advertise<std_msgs::UInt32>("rejected_estimates", 1, true);
+  publishRejected();
+  recognize_service_ =
+      node_.advertiseService("recognize_scenes", &SceneRecognizerNode::recognize, this);
+  reload_service_ = node_.advertiseService("reload_model", &SceneRecognizerNode::reload, this);
+  if (continuous) {
+    subscriber_ = node_.subscribe("objects", 100, &SceneRecognizerNode::receive, this);
+    timer_ = node_.createTimer(ros::Duration(1.0 / rate), &SceneRecognizerNode::tick, this);
+  }
+  std::string loaded;
+  for (const std::string& scene : models_.scenes())
+    loaded += (loaded.empty() ? "" : ", ") + scene;
+  ROS_INFO("scene_recognizer: %zu scenes loaded (%s), %s", models_.scenes().size(), loaded.c_str(),
+           continuous ? "continuous mode" : "service only");
+}
+
+bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,
+                                    asr_msgs::RecognizeScenes::Response& response) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::size_t rejected_before = intake_.rejectedCount();
+  asr_ism::Configuration configuration;
+  for (const asr_msgs::ObjectEstimate& estimate : request.objects) {
+    if (auto accepted = intake_.accept(estimate))
+      configuration.push_back(*accepted);
+  }
+  response.rejected_estimates =
+      static_cast<std::uint32_t>(intake_.rejectedCount() - rejected_before);
+  if (response.rejected_estimates > 0)
+    publishRejected();
+  try {
+    const std::vector<SceneInstance> instances = models_.recognize(configuration, request.scenes);
+    std_msgs::Header header;
+    header.stamp = ros::Time::now();
+    header.frame_id = intake_.fixedFrame();
+    for (const SceneInstance& instance : instances)
+      response.instances.push_back(toSceneInstanceMessage(instance, header));
+    if (instances.empty())
+      response.message = configuration.empty() ? "no valid object estimate in the request"
+                                               : "no instance of the scenes asked for";
+  } catch (const asr_ism::InputError& error) {
+    response.message = error.what();
+  }
+  return true;
+}
+
+bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
+                                 asr_msgs::ReloadModel::Response& response) {
+  const std::vector<std::string> files =
+      request.model_files.empty() ? model_files_ : request.model_files;
+  try {
+    SceneModels loaded = SceneModels::load(files, scenes_);
+    std::lock_guard<std::mutex> lock(mutex_);
+    models_ = std::move(loaded);
+    model_files_ = files;
+    response.success = true;
+  } catch (const asr_ism::InputError& error) {
+    response.success = false;
+    response.message = std::string(error.what()) + "; the previous models stay in use";
+    ROS_WARN("scene_recognizer: reload failed: %s", response.message.c_str());
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  response.scenes = models_.scenes();
+  return true;
+}
+
+void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const std::size_t rejected_before = intake_.rejectedCount();
+  for (const asr_msgs::ObjectEstimate& estimate : message.objects) {
+    if (auto accepted = intake_.accept(estimate)) {
+      latest_.update(*accepted, estimate.header.stamp.toSec());
+      newest_stamp_ = std::max(newest_stamp_, estimate.header.stamp);
+    }
+  }
+  if (intake_.rejectedCount() != rejected_before)
+    publishRejected();
+}
+
+void SceneRecognizerNode::tick(const ros::TimerEvent&) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const asr_ism::Configuration configuration =
+      latest_.current(ros::Time::now().toSec(), estimate_timeout_);
+  asr_msgs::SceneInstanceList list;
+  list.header.stamp = newest_stamp_;
+  list.header.frame_id = intake_.fixedFrame();
+  std::vector<SceneInstance> instances;
+  if (!configuration.empty())
+    instances = models_.recognize(configuration);
+  for (const SceneInstance& instance : instances)
+    list.instances.push_back(toSceneInstanceMessage(instance, list.header));
+  instances_publisher_.publish(list);
+  if (markers_publisher_.getNumSubscribers() > 0)
+    markers_publisher_.publish(sceneInstanceMarkers(instances, models_, list.header));
+}
+
+void SceneRecognizerNode::publishRejected() {
+  std_msgs::UInt32 count;
+  count.data = static_cast<std::uint32_t>(intake_.rejectedCount());
+  rejected_publisher_.publish(count);
+}
+
+}  // namespace asr_ism_tree::ros_interface

@@ -1,0 +1,195 @@
+// The scene_recognizer node end to end, with a ROS master (rostest): the service on a recorded
+// configuration and on clutter, malformed estimates, the continuous mode and model reloading.
+
+#include <asr_msgs/ObjectEstimateList.h>
+#include <asr_msgs/RecognizeScenes.h>
+#include <asr_msgs/ReloadModel.h>
+#include <asr_msgs/SceneInstanceList.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_msgs/UInt32.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism/testing/node_process.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/temp_dir.hpp"
+#include "asr_ism_tree/sqlite/model_store.hpp"
+#include "asr_ism_tree/tree_generation.hpp"
+
+namespace asr_ism_tree {
+namespace {
+
+using asr_ism::testing::NodeProcess;
+using asr_ism::testing::TempDir;
+
+constexpr double kRate = 2.0;  // Hz, in continuous mode
+
+asr_msgs::ObjectEstimate estimateMessage(const asr_ism::ObjectEstimate& estimate) {
+  std_msgs::Header header;
+  header.frame_id = "map";
+  header.stamp = ros::Time::now();
+  return asr_ism::ros_interface::toEstimateMessage(estimate, header);
+}
+
+// Waits until `done` holds, spinning, for at most `seconds`.
+template <typename Condition>
+bool waitFor(Condition done, double seconds) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (!done() && ros::WallTime::now() < deadline && ros::ok()) {
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  return done();
+}
+
+class SceneRecognizerNodeTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    REQUIRE_RECORDINGS();
+    demonstration_ = asr_ism::sqlite::readDemonstration(
+        asr_ism::testing::recording("story_2.sqlite"), "Brot_Regal");
+    model_ = dir_.file("brot_regal.sqlite");
+    sqlite::saveIsmTree(
+        model_,
+        generateIsmTree(demonstration_, RelationTopology::complete(demonstration_.objects()), {}),
+        "test");
+    const asr_ism::Demonstration muesli = asr_ism::sqlite::readDemonstration(
+        asr_ism::testing::recording("story_2.sqlite"), "Muesli_Regal");
+    other_model_ = dir_.file("muesli_regal.sqlite");
+    sqlite::saveIsmTree(other_model_,
+                        generateIsmTree(muesli, RelationTopology::complete(muesli.objects()), {}),
+                        "test");
+    node_ = std::make_unique<NodeProcess>(
+        std::string(ASR_NODE_DIR) + "/scene_recognizer",
+        std::vector<std::string>{"__name:=scene_recognizer", "_model_files:=" + model_,
+                                 "_rate:=" + std::to_string(kRate), "_estimate_timeout:=0"});
+    recognize_ = handle_.serviceClient<asr_msgs::RecognizeScenes>("recognize_scenes");
+    ASSERT_TRUE(recognize_.waitForExistence(ros::Duration(30))) << "scene_recognizer did not start";
+  }
+
+  asr_msgs::RecognizeScenes::Response ask(const asr_ism::Configuration& configuration) {
+    asr_msgs::RecognizeScenes service;
+    for (const asr_ism::ObjectEstimate& estimate : configuration)
+      service.request.objects.push_back(estimateMessage(estimate));
+    EXPECT_TRUE(recognize_.call(service));
+    return service.response;
+  }
+
+  TempDir dir_{"asr_scene_recognizer_rostest"};
+  asr_ism::Demonstration demonstration_;
+  std::string model_;
+  std::string other_model_;
+  std::unique_ptr<NodeProcess> node_;
+  ros::NodeHandle handle_;
+  ros::ServiceClient recognize_;
+};
+
+TEST_F(SceneRecognizerNodeTest, ServiceRecognisesARecordedConfiguration) {
+  const asr_msgs::RecognizeScenes::Response response = ask(demonstration_.configuration(7));
+  ASSERT_FALSE(response.instances.empty()) << response.message;
+  EXPECT_EQ(response.instances[0].scene, "Brot_Regal");
+  EXPECT_GE(response.instances[0].confidence, 0.99);
+  EXPECT_EQ(response.instances[0].header.frame_id, "map");
+  EXPECT_EQ(response.instances[0].objects.size(), demonstration_.objectCount());
+  EXPECT_EQ(response.rejected_estimates, 0u);
+  EXPECT_TRUE(response.message.empty()) << response.message;
+}
+
+TEST_F(SceneRecognizerNodeTest, ClutterOnlyHasNoInstance) {
+  asr_ism::Configuration clutter = demonstration_.configuration(7);
+  for (asr_ism::ObjectEstimate& estimate : clutter)
+    estimate.key.type = "Unknown_" + estimate.key.type;
+  const asr_msgs::RecognizeScenes::Response response = ask(clutter);
+  EXPECT_TRUE(response.instances.empty());
+  EXPECT_FALSE(response.message.empty());
+}
+
+TEST_F(SceneRecognizerNodeTest, MalformedEstimatesAreRejectedCountedAndTheNodeKeepsRunning) {
+  asr_msgs::RecognizeScenes service;
+  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(7))
+    service.request.objects.push_back(estimateMessage(estimate));
+  asr_msgs::ObjectEstimate nan = service.request.objects[0];
+  nan.pose.pose.position.x = std::numeric_limits<double>::quiet_NaN();
+  asr_msgs::ObjectEstimate zero = service.request.objects[1];
+  zero.pose.pose.orientation.x = zero.pose.pose.orientation.y = zero.pose.pose.orientation.z =
+      zero.pose.pose.orientation.w = 0.0;
+  asr_msgs::ObjectEstimate empty = service.request.objects[2];
+  empty.type = "";
+  service.request.objects = {nan, zero, empty};
+  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(7))
+    service.request.objects.push_back(estimateMessage(estimate));
+  ASSERT_TRUE(recognize_.call(service));
+  EXPECT_EQ(service.response.rejected_estimates, 3u);
+  ASSERT_FALSE(service.response.instances.empty());
+  EXPECT_GE(service.response.instances[0].confidence, 0.99);
+
+  // The same on the topic: counted on ~rejected_estimates, and the node still answers.
+  std::uint32_t rejected = 0;
+  ros::Subscriber counter = handle_.subscribe<std_msgs::UInt32>(
+      "scene_recognizer/rejected_estimates", 10,
+      [&](const std_msgs::UInt32::ConstPtr& count) { rejected = count->data; });
+  ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
+  ASSERT_TRUE(waitFor([&] { return objects.getNumSubscribers() > 0; }, 30));
+  asr_msgs::ObjectEstimateList list;
+  list.objects = {nan, zero, empty};
+  objects.publish(list);
+  EXPECT_TRUE(waitFor([&] { return rejected >= 6; }, 10)) << rejected;
+  EXPECT_TRUE(node_->running());
+  EXPECT_FALSE(ask(demonstration_.configuration(3)).instances.empty());
+}
+
+TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesWithinTwoPeriods) {
+  ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
+  ros::WallTime published;
+  ros::WallTime found;
+  ros::Subscriber instances = handle_.subscribe<asr_msgs::SceneInstanceList>(
+      "scene_instances", 10, [&](const asr_msgs::SceneInstanceList::ConstPtr& list) {
+        if (!published.isZero() && found.isZero() && !list->instances.empty() &&
+            list->instances[0].scene == "Brot_Regal" && list->instances[0].confidence >= 0.99)
+          found = ros::WallTime::now();
+      });
+  ASSERT_TRUE(waitFor(
+      [&] { return objects.getNumSubscribers() > 0 && instances.getNumPublishers() > 0; }, 30));
+  asr_msgs::ObjectEstimateList list;
+  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(12))
+    list.objects.push_back(estimateMessage(estimate));
+  published = ros::WallTime::now();
+  objects.publish(list);
+  ASSERT_TRUE(waitFor([&] { return !found.isZero(); }, 10)) << "no instance published";
+  EXPECT_LE((found - published).toSec(), 2.0 / kRate);
+}
+
+TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
+  ros::ServiceClient reload = handle_.serviceClient<asr_msgs::ReloadModel>("reload_model");
+  asr_msgs::ReloadModel broken;
+  broken.request.model_files = {dir_.file("missing.sqlite")};
+  ASSERT_TRUE(reload.call(broken));
+  EXPECT_FALSE(broken.response.success);
+  EXPECT_NE(broken.response.message.find("missing.sqlite"), std::string::npos)
+      << broken.response.message;
+  EXPECT_EQ(broken.response.scenes, std::vector<std::string>{"Brot_Regal"});
+  EXPECT_FALSE(ask(demonstration_.configuration(7)).instances.empty());
+
+  asr_msgs::ReloadModel swap;
+  swap.request.model_files = {other_model_};
+  ASSERT_TRUE(reload.call(swap));
+  EXPECT_TRUE(swap.response.success) << swap.response.message;
+  EXPECT_EQ(swap.response.scenes, std::vector<std::string>{"Muesli_Regal"});
+  for (const auto& instance : ask(demonstration_.configuration(7)).instances)
+    EXPECT_NE(instance.scene, "Brot_Regal");
+}
+
+}  // namespace
+}  // namespace asr_ism_tree
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "scene_recognizer_rostest");
+  ros::NodeHandle keep_alive;  // the node's connection to the master for the whole test
+  return RUN_ALL_TESTS();
+}
