@@ -1,0 +1,36 @@
+#pragma once
+
+#include <ros/ros.h>
+
+#include <string>
+
+#include "asr_ism/demonstration.hpp"
+
+namespace asr_ism::ros_interface {
+
+/// The replay_demonstration node: publishes the recorded sets of one scene of a demonstration
+/// file as asr_msgs/ObjectEstimateList on `objects`, one set per 1/rate seconds, in the fixed
+/// frame, and the demonstration's trajectories on demonstration_markers (latched). Parameters
+/// (private): demonstration_file and scene (required), rate (sets per second, 2), loop (false),
+/// fixed_frame (map), wait_for_subscribers (true: start once `objects` has a subscriber, so
+/// that no set is lost). Without loop the node ends after the last set.
+class ReplayNode {
+ public:
+  /// Reads and checks the parameters and the file: throws InputError naming them.
+  ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node);
+
+  /// Publishes the sets; returns when done (or on shutdown).
+  void run();
+
+ private:
+  ros::NodeHandle node_;
+  Demonstration demonstration_;
+  std::string fixed_frame_;
+  double rate_ = 2.0;
+  bool loop_ = false;
+  bool wait_for_subscribers_ = true;
+  ros::Publisher objects_publisher_;
+  ros::Publisher markers_publisher_;
+};
+
+}  // namespace asr_ism::ros_interface

@@ -1,0 +1,57 @@
+#include "asr_ism/ros/replay_node.hpp"
+
+#include <asr_msgs/ObjectEstimateList.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "asr_ism/ros/demonstration_markers.hpp"
+#include "asr_ism/ros/node_parameters.hpp"
+#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_ism/sqlite/demonstration_reader.hpp"
+
+namespace asr_ism::ros_interface {
+
+ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : node_(node) {
+  const auto file = requiredParameter<std::string>(private_node, "demonstration_file");
+  const auto scene = requiredParameter<std::string>(private_node, "scene");
+  rate_ = optionalParameter<double>(private_node, "rate", rate_);
+  checkParameter(private_node, "rate", rate_ > 0.0 && rate_ <= 1000.0, "in (0, 1000] sets/s");
+  loop_ = optionalParameter<bool>(private_node, "loop", loop_);
+  wait_for_subscribers_ =
+      optionalParameter<bool>(private_node, "wait_for_subscribers", wait_for_subscribers_);
+  fixed_frame_ = optionalParameter<std::string>(private_node, "fixed_frame", "map");
+  checkParameter(private_node, "fixed_frame", !fixed_frame_.empty(), "a frame name, not empty");
+  demonstration_ = sqlite::readDemonstration(file, scene);
+  // Large queues: a slow subscriber gets every set rather than the latest only.
+  objects_publisher_ = node_.advertise<asr_msgs::ObjectEstimateList>("objects", 1000);
+  markers_publisher_ =
+      node_.advertise<visualization_msgs::MarkerArray>("demonstration_markers", 1, true);
+  ROS_INFO("replay_demonstration: scene '%s' from %s, %zu sets at %.1f sets/s%s", scene.c_str(),
+           file.c_str(), demonstration_.stepCount(), rate_, loop_ ? ", looping" : "");
+}
+
+void ReplayNode::run() {
+  std_msgs::Header header;
+  header.frame_id = fixed_frame_;
+  header.stamp = ros::Time::now();
+  markers_publisher_.publish(demonstrationMarkers(demonstration_, header));
+  if (wait_for_subscribers_) {
+    while (ros::ok() && objects_publisher_.getNumSubscribers() == 0)
+      ros::WallDuration(0.05).sleep();
+  }
+  ros::Rate rate(rate_);
+  do {
+    for (std::size_t step = 0; step < demonstration_.stepCount() && ros::ok(); ++step) {
+      asr_msgs::ObjectEstimateList list;
+      list.header.stamp = ros::Time::now();
+      list.header.frame_id = fixed_frame_;
+      list.header.seq = static_cast<std::uint32_t>(step);
+      for (const ObjectEstimate& estimate : demonstration_.configuration(step))
+        list.objects.push_back(toEstimateMessage(estimate, list.header));
+      objects_publisher_.publish(list);
+      rate.sleep();
+    }
+  } while (loop_ && ros::ok());
+  ROS_INFO("replay_demonstration: all %zu sets published", demonstration_.stepCount());
+}
+
+}  // namespace asr_ism::ros_interface

@@ -1,0 +1,160 @@
+// The recorder and replay_demonstration nodes end to end, with a ROS master (rostest): a real
+// recording replayed into the recorder gives a file whose sets equal the source's; what was in
+// the file stays; malformed estimates are rejected and counted while the node keeps recording.
+
+#include <asr_msgs/ObjectEstimateList.h>
+#include <asr_msgs/RecordConfiguration.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_msgs/UInt32.h>
+
+#include <limits>
+#include <memory>
+
+#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism/sqlite/demonstration_writer.hpp"
+#include "asr_ism/synthetic_demonstration.hpp"
+#include "asr_ism/testing/node_process.hpp"
+#include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/temp_dir.hpp"
+
+namespace asr_ism {
+namespace {
+
+using testing::NodeProcess;
+using testing::TempDir;
+
+template <typename Condition>
+bool waitFor(Condition done, double seconds) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
+  while (!done() && ros::WallTime::now() < deadline && ros::ok()) {
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  return done();
+}
+
+std::string node(const std::string& name) {
+  return std::string(ASR_NODE_DIR) + "/" + name;
+}
+
+// Counts published on a latched UInt32 topic.
+struct Counter {
+  std::uint32_t value = 0;
+  ros::Subscriber subscriber;
+  Counter(ros::NodeHandle& handle, const std::string& topic)
+      : subscriber(handle.subscribe<std_msgs::UInt32>(
+            topic, 10, [this](const std_msgs::UInt32::ConstPtr& count) { value = count->data; })) {}
+};
+
+class RecorderNodeTest : public ::testing::Test {
+ protected:
+  void startRecorder(const std::string& mode) {
+    recorder_ = std::make_unique<NodeProcess>(
+        node("recorder"),
+        std::vector<std::string>{"__name:=recorder", "_demonstration_file:=" + output_,
+                                 "_scene:=Getraenke_Regal", "_mode:=" + mode});
+    ros::ServiceClient client =
+        handle_.serviceClient<asr_msgs::RecordConfiguration>("record_configuration");
+    ASSERT_TRUE(client.waitForExistence(ros::Duration(30))) << "recorder did not start";
+  }
+
+  TempDir dir_{"asr_recorder_rostest"};
+  std::string output_ = dir_.file("recorded.sqlite");
+  ros::NodeHandle handle_;
+  std::unique_ptr<NodeProcess> recorder_;
+};
+
+TEST_F(RecorderNodeTest, AReplayedRecordingIsRecordedSetForSetAndTheFileKeepsItsRows) {
+  REQUIRE_RECORDINGS();
+  const std::string source = testing::recording("story_2.sqlite");
+  const Demonstration original = sqlite::readDemonstration(source, "Getraenke_Regal");
+  // Something the user recorded before: it must survive.
+  const Demonstration earlier = makeSyntheticDemonstration(3, 4, 1, "earlier");
+  sqlite::appendDemonstration(output_, earlier);
+
+  startRecorder("message");
+  Counter recorded(handle_, "recorder/recorded_sets");
+  NodeProcess replay(
+      node("replay_demonstration"),
+      {"__name:=replay", "_demonstration_file:=" + source, "_scene:=Getraenke_Regal", "_rate:=40"});
+  ASSERT_TRUE(waitFor([&] { return recorded.value == original.stepCount(); }, 90))
+      << recorded.value << " of " << original.stepCount() << " sets recorded";
+  EXPECT_EQ(replay.waitForExit(std::chrono::seconds(10)), 0);
+  recorder_->stop();
+
+  const Demonstration copy = sqlite::readDemonstration(output_, "Getraenke_Regal");
+  ASSERT_EQ(copy.stepCount(), original.stepCount());
+  for (std::size_t step = 0; step < original.stepCount(); ++step) {
+    const Configuration expected = original.configuration(step);
+    const Configuration actual = copy.configuration(step);
+    ASSERT_EQ(actual.size(), expected.size()) << "set " << step;
+    for (const ObjectEstimate& estimate : expected) {
+      const auto found = std::find_if(actual.begin(), actual.end(),
+                                      [&](const auto& e) { return e.key == estimate.key; });
+      ASSERT_NE(found, actual.end()) << estimate.key.toString() << " in set " << step;
+      // Through a float64 message and back: equal to rounding.
+      EXPECT_LT((found->pose.position - estimate.pose.position).norm(), 1e-9);
+      EXPECT_LT(angleBetween(found->pose.orientation, estimate.pose.orientation), 1e-6);
+    }
+  }
+  const Demonstration kept = sqlite::readDemonstration(output_, "earlier");
+  EXPECT_EQ(kept.stepCount(), earlier.stepCount());
+}
+
+TEST_F(RecorderNodeTest, MalformedEstimatesAreRejectedCountedAndRecordingGoesOn) {
+  startRecorder("message");
+  Counter recorded(handle_, "recorder/recorded_sets");
+  Counter rejected(handle_, "recorder/rejected_estimates");
+  ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
+  ASSERT_TRUE(waitFor([&] { return objects.getNumSubscribers() > 0; }, 30));
+
+  std_msgs::Header header;
+  header.frame_id = "map";
+  header.stamp = ros::Time::now();
+  const ObjectEstimate valid{{"Cup", "0"},
+                             Pose(Eigen::Vector3d(1, 2, 0.8), Eigen::Quaterniond::Identity())};
+  asr_msgs::ObjectEstimate nan = ros_interface::toEstimateMessage(valid, header);
+  nan.type = "Plate";
+  nan.pose.pose.position.y = std::numeric_limits<double>::quiet_NaN();
+  asr_msgs::ObjectEstimate zero = ros_interface::toEstimateMessage(valid, header);
+  zero.type = "Knife";
+  zero.pose.pose.orientation.w = 0.0;
+  asr_msgs::ObjectEstimate empty = ros_interface::toEstimateMessage(valid, header);
+  empty.type = "";
+  asr_msgs::ObjectEstimateList list;
+  list.objects = {nan, zero, empty, ros_interface::toEstimateMessage(valid, header)};
+  objects.publish(list);
+  ASSERT_TRUE(waitFor([&] { return rejected.value == 3 && recorded.value == 1; }, 10))
+      << rejected.value << " rejected, " << recorded.value << " recorded";
+  EXPECT_TRUE(recorder_->running());
+
+  // The service records a given configuration too, under its own scene if named.
+  ros::ServiceClient client =
+      handle_.serviceClient<asr_msgs::RecordConfiguration>("record_configuration");
+  asr_msgs::RecordConfiguration service;
+  service.request.scene = "by_service";
+  service.request.objects = {ros_interface::toEstimateMessage(valid, header)};
+  ASSERT_TRUE(client.call(service));
+  EXPECT_TRUE(service.response.success) << service.response.message;
+  EXPECT_EQ(service.response.object_count, 1u);
+  recorder_->stop();
+  EXPECT_EQ(sqlite::readDemonstration(output_, "Getraenke_Regal").stepCount(), 1u);
+  EXPECT_EQ(sqlite::readDemonstration(output_, "by_service").stepCount(), 1u);
+}
+
+TEST_F(RecorderNodeTest, AMissingParameterStopsTheNodeWithAnError) {
+  NodeProcess bad(node("recorder"), {"__name:=bad_recorder", "_scene:=x"});
+  EXPECT_EQ(bad.waitForExit(std::chrono::seconds(20)), 1);
+}
+
+}  // namespace
+}  // namespace asr_ism
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "recorder_rostest");
+  ros::NodeHandle keep_alive;
+  return RUN_ALL_TESTS();
+}
