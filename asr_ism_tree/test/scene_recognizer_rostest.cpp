@@ -184,6 +184,28 @@ TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
     EXPECT_NE(instance.scene, "Brot_Regal");
 }
 
+TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
+  REQUIRE_RECORDINGS();
+  TempDir dir("asr_trainer_rostest");
+  const std::string model = dir.file("trained.sqlite");
+  for (const char* topology : {"star", "optimised"}) {
+    NodeProcess trainer(std::string(ASR_NODE_DIR) + "/trainer",
+                        {std::string("__name:=trainer_") + topology,
+                         "_demonstration_file:=" + asr_ism::testing::recording("story_2.sqlite"),
+                         "_model_file:=" + model, "_scenes:=Getraenke_Regal",
+                         std::string("_topology:=") + topology, "_tests:=100"});
+    EXPECT_EQ(trainer.waitForExit(std::chrono::seconds(60)), 0) << topology;
+    const IsmTree tree = sqlite::loadIsmTree(model, "Getraenke_Regal");
+    EXPECT_TRUE(tree.topology.isConnected());
+    if (std::string(topology) == "star")
+      EXPECT_EQ(tree.isms.size(), 1u);
+  }
+  NodeProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
+                  {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
+                   "_model_file:=" + model, "_topology:=star"});
+  EXPECT_EQ(bad.waitForExit(std::chrono::seconds(30)), 1);
+}
+
 }  // namespace
 }  // namespace asr_ism_tree
 
