@@ -3,6 +3,8 @@
 #include <asr_msgs/ObjectEstimateList.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
+
 #include "asr_ism/ros/demonstration_markers.hpp"
 #include "asr_ism/ros/node_parameters.hpp"
 #include "asr_ism/ros/object_estimate_message.hpp"
@@ -20,6 +22,7 @@ ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : nod
       optionalParameter<bool>(private_node, "wait_for_subscribers", wait_for_subscribers_);
   fixed_frame_ = optionalParameter<std::string>(private_node, "fixed_frame", "map");
   checkParameter(private_node, "fixed_frame", !fixed_frame_.empty(), "a frame name, not empty");
+  hide_types_ = stringListParameter(private_node, "hide_types");
   demonstration_ = sqlite::readDemonstration(file, scene);
   // Large queues: a slow subscriber gets every set rather than the latest only.
   objects_publisher_ = node_.advertise<asr_msgs::ObjectEstimateList>("objects", 1000);
@@ -45,8 +48,11 @@ void ReplayNode::run() {
       list.header.stamp = ros::Time::now();
       list.header.frame_id = fixed_frame_;
       list.header.seq = static_cast<std::uint32_t>(step);
-      for (const ObjectEstimate& estimate : demonstration_.configuration(step))
-        list.objects.push_back(toEstimateMessage(estimate, list.header));
+      for (const ObjectEstimate& estimate : demonstration_.configuration(step)) {
+        if (std::find(hide_types_.begin(), hide_types_.end(), estimate.key.type) ==
+            hide_types_.end())
+          list.objects.push_back(toEstimateMessage(estimate, list.header));
+      }
       objects_publisher_.publish(list);
       rate.sleep();
     }

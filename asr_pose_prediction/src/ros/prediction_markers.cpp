@@ -72,7 +72,7 @@ visualization_msgs::MarkerArray predictionMarkers(
       label.pose.position = mean;
       label.pose.position.z += 3 * style.arrow_length;
       label.pose.orientation.w = 1.0;
-      label.scale.z = style.arrow_length;
+      label.scale.z = 0.6 * style.arrow_length;
       label.color = color;
       label.color.a = 1.0;
       label.text = name + " (" + cloud.scene + ")";

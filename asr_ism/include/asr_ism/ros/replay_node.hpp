@@ -3,6 +3,7 @@
 #include <ros/ros.h>
 
 #include <string>
+#include <vector>
 
 #include "asr_ism/demonstration.hpp"
 
@@ -13,7 +14,8 @@ namespace asr_ism::ros_interface {
 /// frame, and the demonstration's trajectories on demonstration_markers (latched). Parameters
 /// (private): demonstration_file and scene (required), rate (sets per second, 2), loop (false),
 /// fixed_frame (map), wait_for_subscribers (true: start once `objects` has a subscriber, so
-/// that no set is lost). Without loop the node ends after the last set.
+/// that no set is lost), hide_types (list of object types left out of every set, e.g. to show
+/// the pose prediction of objects not seen yet). Without loop the node ends after the last set.
 class ReplayNode {
  public:
   /// Reads and checks the parameters and the file: throws InputError naming them.
@@ -29,6 +31,7 @@ class ReplayNode {
   double rate_ = 2.0;
   bool loop_ = false;
   bool wait_for_subscribers_ = true;
+  std::vector<std::string> hide_types_;
   ros::Publisher objects_publisher_;
   ros::Publisher markers_publisher_;
 };
