@@ -17,6 +17,7 @@
 #include "asr_ism/synthetic_demonstration.hpp"
 #include "asr_ism/testing/node_process.hpp"
 #include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/rostest_support.hpp"
 #include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism {
@@ -24,16 +25,7 @@ namespace {
 
 using testing::NodeProcess;
 using testing::TempDir;
-
-template <typename Condition>
-bool waitFor(Condition done, double seconds) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!done() && ros::WallTime::now() < deadline && ros::ok()) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
-  return done();
-}
+using testing::waitFor;
 
 std::string node(const std::string& name) {
   return std::string(ASR_NODE_DIR) + "/" + name;
@@ -153,8 +145,5 @@ TEST_F(RecorderNodeTest, AMissingParameterStopsTheNodeWithAnError) {
 }  // namespace asr_ism
 
 int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "recorder_rostest");
-  ros::NodeHandle keep_alive;
-  return RUN_ALL_TESTS();
+  return asr_ism::testing::runRostests(argc, argv, "recorder_rostest");
 }

@@ -40,14 +40,10 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   std::ostream& progress = std::cerr;
 
   std::vector<SceneRow> scene_rows;
-  const std::string recordings = cli::recordingsFolder(options, ASR_RECORDINGS_DIR);
-  if (!cli::isDirectory(recordings)) {
-    progress << "asr_bench: recordings folder '" << recordings
-             << "' not found; skipping the kitchen scenes (give --recordings DIR or set "
-                "ASR_RECORDINGS_DIR)\n";
-  } else {
-    progress << "kitchen scenes from " << recordings << "\n";
-    scene_rows = benchmarkKitchenScenes(recordings, settings, progress);
+  if (const auto recordings =
+          cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress)) {
+    progress << "kitchen scenes from " << *recordings << "\n";
+    scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
   }
 
   std::vector<SyntheticRow> synthetic_rows;
@@ -74,7 +70,7 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
     printSceneTable(std::cout, scene_rows, settings);
     std::cout << "\n";
   } else {
-    std::cout << "Kitchen scenes: skipped, recordings folder '" << recordings << "' not found\n\n";
+    std::cout << "Kitchen scenes: skipped, recordings folder not found\n\n";
   }
   if (!synthetic_rows.empty()) {
     printSyntheticTable(std::cout, synthetic_rows, settings);

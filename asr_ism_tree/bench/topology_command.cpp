@@ -184,14 +184,10 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
   const auto start = std::chrono::steady_clock::now();
 
   std::vector<TopologyTableRow> rows;
-  const std::string recordings = cli::recordingsFolder(options, ASR_RECORDINGS_DIR);
-  if (!cli::isDirectory(recordings)) {
-    progress << "asr_bench: recordings folder '" << recordings
-             << "' not found; skipping the kitchen scenes (give --recordings DIR or set "
-                "ASR_RECORDINGS_DIR)\n";
-  } else {
-    progress << "relation topology selection for the kitchen scenes of " << recordings << "\n";
-    rows = benchmarkTopologies(recordings, splitCommas(options.optional("scenes", "")), selection,
+  if (const auto recordings =
+          cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress)) {
+    progress << "relation topology selection for the kitchen scenes of " << *recordings << "\n";
+    rows = benchmarkTopologies(*recordings, splitCommas(options.optional("scenes", "")), selection,
                                progress);
   }
   std::vector<TopologyRuntimePoint> points;

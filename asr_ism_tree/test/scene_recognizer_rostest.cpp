@@ -17,6 +17,7 @@
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/testing/node_process.hpp"
 #include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/rostest_support.hpp"
 #include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
@@ -26,6 +27,7 @@ namespace {
 
 using asr_ism::testing::NodeProcess;
 using asr_ism::testing::TempDir;
+using asr_ism::testing::waitFor;
 
 constexpr double kRate = 2.0;  // Hz, in continuous mode
 
@@ -37,15 +39,6 @@ asr_msgs::ObjectEstimate estimateMessage(const asr_ism::ObjectEstimate& estimate
 }
 
 // Waits until `done` holds, spinning, for at most `seconds`.
-template <typename Condition>
-bool waitFor(Condition done, double seconds) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!done() && ros::WallTime::now() < deadline && ros::ok()) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
-  return done();
-}
 
 class SceneRecognizerNodeTest : public ::testing::Test {
  protected:
@@ -210,8 +203,5 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
 }  // namespace asr_ism_tree
 
 int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "scene_recognizer_rostest");
-  ros::NodeHandle keep_alive;  // the node's connection to the master for the whole test
-  return RUN_ALL_TESTS();
+  return asr_ism::testing::runRostests(argc, argv, "scene_recognizer_rostest");
 }

@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <limits>
+#include <optional>
 
 #include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/cli/recordings_folder.hpp"
@@ -52,18 +53,15 @@ int runPredictionBenchmark(const std::vector<std::string>& arguments) {
 
   std::vector<RuntimeRow> kitchen_rows;
   std::vector<AccuracyRow> accuracy_rows;
-  const std::string recordings = asr_ism_tree::cli::recordingsFolder(options, ASR_RECORDINGS_DIR);
-  const bool have_recordings = asr_ism_tree::cli::isDirectory(recordings);
-  if (!have_recordings) {
-    progress << "asr_prediction_bench: recordings folder '" << recordings
-             << "' not found; skipping the kitchen scenes (give --recordings DIR or set "
-                "ASR_RECORDINGS_DIR)\n";
-  } else {
-    progress << "kitchen scenes from " << recordings << ": runtime\n";
-    kitchen_rows = benchmarkKitchenRuntime(recordings, settings, progress);
+  const std::optional<std::string> recordings = asr_ism_tree::cli::benchmarkRecordings(
+      options, ASR_RECORDINGS_DIR, "asr_prediction_bench", progress);
+  const bool have_recordings = recordings.has_value();
+  if (have_recordings) {
+    progress << "kitchen scenes from " << *recordings << ": runtime\n";
+    kitchen_rows = benchmarkKitchenRuntime(*recordings, settings, progress);
     if (!options.flag("no-accuracy")) {
       progress << "kitchen scenes: leave-one-out accuracy\n";
-      accuracy_rows = benchmarkKitchenAccuracy(recordings, settings, progress);
+      accuracy_rows = benchmarkKitchenAccuracy(*recordings, settings, progress);
     }
   }
   std::vector<RuntimeRow> synthetic_rows;
@@ -94,8 +92,7 @@ int runPredictionBenchmark(const std::vector<std::string>& arguments) {
       printKitchenRuntimeTable(std::cout, kitchen_rows, settings);
       std::cout << "\n";
     } else {
-      std::cout << "Kitchen scenes: skipped, recordings folder '" << recordings
-                << "' not found\n\n";
+      std::cout << "Kitchen scenes: skipped, recordings folder not found\n\n";
     }
     if (!synthetic_rows.empty()) {
       printSyntheticRuntimeTable(std::cout, synthetic_rows, settings);

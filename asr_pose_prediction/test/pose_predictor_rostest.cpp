@@ -15,6 +15,7 @@
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/testing/node_process.hpp"
 #include "asr_ism/testing/recordings_skip.hpp"
+#include "asr_ism/testing/rostest_support.hpp"
 #include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
@@ -26,16 +27,7 @@ namespace {
 
 using asr_ism::testing::NodeProcess;
 using asr_ism::testing::TempDir;
-
-template <typename Condition>
-bool waitFor(Condition done, double seconds) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!done() && ros::WallTime::now() < deadline && ros::ok()) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
-  return done();
-}
+using asr_ism::testing::waitFor;
 
 class PosePredictorNodeTest : public ::testing::Test {
  protected:
@@ -162,8 +154,5 @@ TEST_F(PosePredictorNodeTest, NothingToPredictFromIsSaid) {
 }  // namespace asr_pose_prediction
 
 int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  ros::init(argc, argv, "pose_predictor_rostest");
-  ros::NodeHandle keep_alive;
-  return RUN_ALL_TESTS();
+  return asr_ism::testing::runRostests(argc, argv, "pose_predictor_rostest");
 }

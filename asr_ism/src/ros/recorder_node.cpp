@@ -5,21 +5,11 @@
 #include "asr_ism/ros/node_parameters.hpp"
 
 namespace asr_ism::ros_interface {
-namespace {
-
-std::string fixedFrameOf(const ros::NodeHandle& private_node) {
-  const auto frame = optionalParameter<std::string>(private_node, "fixed_frame", "map");
-  checkParameter(private_node, "fixed_frame", !frame.empty(), "a frame name, not empty");
-  return frame;
-}
-
-}  // namespace
-
 RecorderNode::RecorderNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
       private_node_(private_node),
       listener_(buffer_),
-      intake_(buffer_, fixedFrameOf(private_node)) {
+      intake_(buffer_, fixedFrameParameter(private_node)) {
   const auto file = requiredParameter<std::string>(private_node_, "demonstration_file");
   scene_ = requiredParameter<std::string>(private_node_, "scene");
   checkParameter(private_node_, "scene", !scene_.empty(), "a scene name, not empty");

@@ -20,8 +20,7 @@ ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : nod
   loop_ = optionalParameter<bool>(private_node, "loop", loop_);
   wait_for_subscribers_ =
       optionalParameter<bool>(private_node, "wait_for_subscribers", wait_for_subscribers_);
-  fixed_frame_ = optionalParameter<std::string>(private_node, "fixed_frame", "map");
-  checkParameter(private_node, "fixed_frame", !fixed_frame_.empty(), "a frame name, not empty");
+  fixed_frame_ = fixedFrameParameter(private_node);
   hide_types_ = stringListParameter(private_node, "hide_types");
   demonstration_ = sqlite::readDemonstration(file, scene);
   // Large queues: a slow subscriber gets every set rather than the latest only.

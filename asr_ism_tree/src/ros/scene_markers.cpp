@@ -3,25 +3,21 @@
 #include <algorithm>
 #include <map>
 
+#include "asr_ism/ros/marker_style.hpp"
 #include "asr_ism/ros/object_estimate_message.hpp"
 
 namespace asr_ism_tree::ros_interface {
 namespace {
 
+using asr_ism::ros_interface::deleteAllMarker;
+using asr_ism::ros_interface::newMarker;
+using asr_ism::ros_interface::pointOf;
+using asr_ism::ros_interface::rgbaColor;
 using asr_ism::ros_interface::toPoseMessage;
 using visualization_msgs::Marker;
 
 constexpr double kSphereHeight = 0.4;  // metres above the instance's pose
 constexpr double kObjectBox = 0.06;
-
-std_msgs::ColorRGBA color(double r, double g, double b, double a = 1.0) {
-  std_msgs::ColorRGBA result;
-  result.r = static_cast<float>(r);
-  result.g = static_cast<float>(g);
-  result.b = static_cast<float>(b);
-  result.a = static_cast<float>(a);
-  return result;
-}
 
 // Distinct colours for the ISMs of a tree, root first.
 std_msgs::ColorRGBA ismColor(std::size_t ism) {
@@ -30,58 +26,36 @@ std_msgs::ColorRGBA ismColor(std::size_t ism) {
                                       {0.89, 0.47, 0.76}, {0.5, 0.5, 0.5},    {0.74, 0.74, 0.13},
                                       {0.09, 0.75, 0.81}};
   const auto& rgb = palette[ism % (sizeof palette / sizeof palette[0])];
-  return color(rgb[0], rgb[1], rgb[2]);
-}
-
-geometry_msgs::Point point(const Eigen::Vector3d& position) {
-  geometry_msgs::Point result;
-  result.x = position.x();
-  result.y = position.y();
-  result.z = position.z();
-  return result;
-}
-
-Marker marker(const std_msgs::Header& header, const std::string& ns, int id, int type) {
-  Marker result;
-  result.header = header;
-  result.ns = ns;
-  result.id = id;
-  result.type = type;
-  result.action = Marker::ADD;
-  result.pose.orientation.w = 1.0;
-  return result;
+  return rgbaColor(rgb[0], rgb[1], rgb[2]);
 }
 
 }  // namespace
 
 std_msgs::ColorRGBA confidenceColor(double confidence) {
   const double c = std::clamp(confidence, 0.0, 1.0);
-  return color(std::min(1.0, 2.0 * (1.0 - c)), std::min(1.0, 2.0 * c), 0.0);
+  return rgbaColor(std::min(1.0, 2.0 * (1.0 - c)), std::min(1.0, 2.0 * c), 0.0);
 }
 
 visualization_msgs::MarkerArray sceneInstanceMarkers(const std::vector<SceneInstance>& instances,
                                                      const SceneModels& models,
                                                      const std_msgs::Header& header) {
   visualization_msgs::MarkerArray markers;
-  Marker clear;
-  clear.header = header;
-  clear.action = Marker::DELETEALL;
-  markers.markers.push_back(clear);
+  markers.markers.push_back(deleteAllMarker(header));
   std::map<std::string, int> next_id;  // per namespace (scene)
   for (const SceneInstance& instance : instances) {
     int& id = next_id[instance.scene];
     const Eigen::Vector3d above = instance.pose.position + Eigen::Vector3d(0, 0, kSphereHeight);
 
-    Marker sphere = marker(header, instance.scene, id++, Marker::SPHERE);
-    sphere.pose.position = point(above);
+    Marker sphere = newMarker(header, instance.scene, id++, Marker::SPHERE);
+    sphere.pose.position = pointOf(above);
     sphere.scale.x = sphere.scale.y = sphere.scale.z = 0.1;
     sphere.color = confidenceColor(instance.confidence);
     markers.markers.push_back(sphere);
 
-    Marker text = marker(header, instance.scene, id++, Marker::TEXT_VIEW_FACING);
-    text.pose.position = point(above + Eigen::Vector3d(0, 0, 0.1));
+    Marker text = newMarker(header, instance.scene, id++, Marker::TEXT_VIEW_FACING);
+    text.pose.position = pointOf(above + Eigen::Vector3d(0, 0, 0.1));
     text.scale.z = 0.06;
-    text.color = color(1, 1, 1);
+    text.color = rgbaColor(1, 1, 1);
     char label[128];
     std::snprintf(label, sizeof label, "%s %.2f", instance.scene.c_str(), instance.confidence);
     text.text = label;
@@ -93,17 +67,17 @@ visualization_msgs::MarkerArray sceneInstanceMarkers(const std::vector<SceneInst
       if (object.similarity <= 0.0)
         continue;
       object_positions[object.key] = object.pose.position;
-      Marker box = marker(header, instance.scene, id++, Marker::CUBE);
+      Marker box = newMarker(header, instance.scene, id++, Marker::CUBE);
       box.pose = toPoseMessage(object.pose);
       box.scale.x = box.scale.y = box.scale.z = kObjectBox;
       box.color = confidenceColor(object.similarity);
       box.color.a = 0.8f;
       markers.markers.push_back(box);
     }
-    Marker stem = marker(header, instance.scene, id++, Marker::LINE_LIST);
+    Marker stem = newMarker(header, instance.scene, id++, Marker::LINE_LIST);
     stem.scale.x = 0.005;
     stem.color = sphere.color;
-    stem.points = {point(instance.pose.position), point(above)};
+    stem.points = {pointOf(instance.pose.position), pointOf(above)};
     markers.markers.push_back(stem);
 
     if (!models.has(instance.scene))
@@ -113,7 +87,7 @@ visualization_msgs::MarkerArray sceneInstanceMarkers(const std::vector<SceneInst
       const InstanceIsm& ism = instance.isms[i];
       if (!ism.recognized)
         continue;
-      Marker lines = marker(header, instance.scene, id++, Marker::LINE_LIST);
+      Marker lines = newMarker(header, instance.scene, id++, Marker::LINE_LIST);
       lines.scale.x = 0.01;
       lines.color = ismColor(i);
       for (const asr_ism::IsmMember& member : tree.isms[i].members) {
@@ -131,8 +105,8 @@ visualization_msgs::MarkerArray sceneInstanceMarkers(const std::vector<SceneInst
         }
         if ((target - ism.reference_pose.position).norm() < 1e-9)
           continue;
-        lines.points.push_back(point(ism.reference_pose.position));
-        lines.points.push_back(point(target));
+        lines.points.push_back(pointOf(ism.reference_pose.position));
+        lines.points.push_back(pointOf(target));
       }
       if (!lines.points.empty())
         markers.markers.push_back(lines);

@@ -12,24 +12,15 @@
 namespace asr_ism_tree::ros_interface {
 
 using asr_ism::ros_interface::checkParameter;
+using asr_ism::ros_interface::fixedFrameParameter;
 using asr_ism::ros_interface::optionalParameter;
 using asr_ism::ros_interface::stringListParameter;
-
-namespace {
-
-std::string fixedFrameOf(const ros::NodeHandle& private_node) {
-  const auto frame = optionalParameter<std::string>(private_node, "fixed_frame", "map");
-  checkParameter(private_node, "fixed_frame", !frame.empty(), "a frame name, not empty");
-  return frame;
-}
-
-}  // namespace
 
 SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
       private_node_(private_node),
       listener_(buffer_),
-      intake_(buffer_, fixedFrameOf(private_node)) {
+      intake_(buffer_, fixedFrameParameter(private_node)) {
   model_files_ = stringListParameter(private_node_, "model_files");
   checkParameter(private_node_, "model_files", !model_files_.empty(),
                  "set to the model files to load (a list, or one file)");

@@ -29,4 +29,16 @@ const std::vector<KitchenScene>& kitchenScenes() {
   return scenes;
 }
 
+std::optional<std::string> benchmarkRecordings(const CommandLine& options,
+                                               const std::string& compiled_default,
+                                               const std::string& program, std::ostream& progress) {
+  const std::string recordings = recordingsFolder(options, compiled_default);
+  if (isDirectory(recordings))
+    return recordings;
+  progress << program << ": recordings folder '" << recordings
+           << "' not found; skipping the kitchen scenes (give --recordings DIR or set "
+              "ASR_RECORDINGS_DIR)\n";
+  return std::nullopt;
+}
+
 }  // namespace asr_ism_tree::cli

@@ -4,35 +4,26 @@
 #include <cstdint>
 #include <map>
 
+#include "asr_ism/ros/marker_style.hpp"
+
 namespace asr_pose_prediction::ros_interface {
+
+using asr_ism::ros_interface::deleteAllMarker;
+using asr_ism::ros_interface::newMarker;
 
 std_msgs::ColorRGBA objectTypeColor(const std::string& type, double alpha) {
   // FNV-1a: a hash that is the same on every platform and run (std::hash is not).
   std::uint32_t hash = 2166136261u;
   for (unsigned char c : type)
     hash = (hash ^ c) * 16777619u;
-  const double hue = (hash % 360u) / 60.0;  // sector 0..6
-  const double rising = hue - std::floor(hue);
-  const double r[] = {1, 1 - rising, 0, 0, rising, 1};
-  const double g[] = {rising, 1, 1, 1 - rising, 0, 0};
-  const double b[] = {0, 0, rising, 1, 1, 1 - rising};
-  const int sector = static_cast<int>(hue) % 6;
-  std_msgs::ColorRGBA color;
-  color.r = static_cast<float>(r[sector]);
-  color.g = static_cast<float>(g[sector]);
-  color.b = static_cast<float>(b[sector]);
-  color.a = static_cast<float>(alpha);
-  return color;
+  return asr_ism::ros_interface::hueColor((hash % 360u) / 360.0, alpha);
 }
 
 visualization_msgs::MarkerArray predictionMarkers(
     const std::vector<asr_msgs::PredictedPoseCloud>& clouds, const PredictionMarkerStyle& style) {
   visualization_msgs::MarkerArray markers;
-  visualization_msgs::Marker clear;
-  clear.action = visualization_msgs::Marker::DELETEALL;
-  if (!clouds.empty())
-    clear.header = clouds.front().header;
-  markers.markers.push_back(clear);
+  markers.markers.push_back(
+      deleteAllMarker(clouds.empty() ? std_msgs::Header() : clouds.front().header));
 
   // Clouds of several instances may hold the same object: ids count on per namespace.
   std::map<std::string, int> next_id;
@@ -45,12 +36,8 @@ visualization_msgs::MarkerArray predictionMarkers(
       int& id = next_id[ns];
       geometry_msgs::Point mean;
       for (const geometry_msgs::Pose& pose : object.poses) {
-        visualization_msgs::Marker arrow;
-        arrow.header = cloud.header;
-        arrow.ns = ns;
-        arrow.id = id++;
-        arrow.type = visualization_msgs::Marker::ARROW;
-        arrow.action = visualization_msgs::Marker::ADD;
+        visualization_msgs::Marker arrow =
+            newMarker(cloud.header, ns, id++, visualization_msgs::Marker::ARROW);
         arrow.pose = pose;
         arrow.scale.x = style.arrow_length;
         arrow.scale.y = style.arrow_length * 0.15;
@@ -63,15 +50,10 @@ visualization_msgs::MarkerArray predictionMarkers(
       }
       if (object.poses.empty())
         continue;
-      visualization_msgs::Marker label;
-      label.header = cloud.header;
-      label.ns = ns;
-      label.id = id++;
-      label.type = visualization_msgs::Marker::TEXT_VIEW_FACING;
-      label.action = visualization_msgs::Marker::ADD;
+      visualization_msgs::Marker label =
+          newMarker(cloud.header, ns, id++, visualization_msgs::Marker::TEXT_VIEW_FACING);
       label.pose.position = mean;
       label.pose.position.z += 3 * style.arrow_length;
-      label.pose.orientation.w = 1.0;
       label.scale.z = 0.6 * style.arrow_length;
       label.color = color;
       label.color.a = 1.0;

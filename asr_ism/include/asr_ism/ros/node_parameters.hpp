@@ -60,4 +60,11 @@ inline void checkParameter(const ros::NodeHandle& node, const std::string& name,
     throw InputError("parameter " + parameterName(node, name) + " must be " + expected);
 }
 
+/// ~fixed_frame (default map), not empty.
+inline std::string fixedFrameParameter(const ros::NodeHandle& node) {
+  const auto frame = optionalParameter<std::string>(node, "fixed_frame", "map");
+  checkParameter(node, "fixed_frame", !frame.empty(), "a frame name, not empty");
+  return frame;
+}
+
 }  // namespace asr_ism::ros_interface

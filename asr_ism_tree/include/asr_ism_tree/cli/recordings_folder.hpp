@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,12 @@ namespace asr_ism_tree::cli {
 std::string recordingsFolder(const CommandLine& options, const std::string& compiled_default);
 
 bool isDirectory(const std::string& path);
+
+/// recordingsFolder if it exists; otherwise says on `progress` that `program` skips the kitchen
+/// scenes and how to point it at the recordings, and returns nothing.
+std::optional<std::string> benchmarkRecordings(const CommandLine& options,
+                                               const std::string& compiled_default,
+                                               const std::string& program, std::ostream& progress);
 
 /// The ten kitchen scenes of the paper's evaluation: file (in the recordings folder) and scene.
 struct KitchenScene {
