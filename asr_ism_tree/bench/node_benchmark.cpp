@@ -23,6 +23,7 @@
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism_tree/cli/recordings_folder.hpp"
 #include "asr_ism_tree/cli/timing.hpp"
+#include "asr_ism_tree/scene_models.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -35,6 +36,7 @@ using namespace asr_ism_tree;
 
 constexpr int kRepetitions = 5;       // per set; the fastest counts, as in asr_bench
 constexpr double kRateWindow = 10.0;  // s of publishing to average the rate over
+constexpr int kAskedHz = 20;          // the node's rate: twice the target, to show the headroom
 
 // A node started for the benchmark and stopped (SIGINT) when it goes.
 class Node {
@@ -139,13 +141,34 @@ int main(int argc, char** argv) {
         "asr_node_bench");
     model_files.push_back(model);
   }
+  // What one tick of the continuous mode costs: every tree on every estimate, in the library.
+  double tick_ms = 0.0;
+  {
+    const SceneModels models = SceneModels::load(model_files);
+    asr_ism::Configuration everything;
+    for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+      const auto configuration =
+          asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene)
+              .configuration(0);
+      // One estimate per object, as the node keeps: scenes share objects.
+      for (const asr_ism::ObjectEstimate& estimate : configuration) {
+        if (std::none_of(everything.begin(), everything.end(),
+                         [&](const auto& kept) { return kept.key == estimate.key; }))
+          everything.push_back(estimate);
+      }
+    }
+    tick_ms = 1e9;
+    for (int repetition = 0; repetition < kRepetitions; ++repetition)
+      tick_ms = std::min(tick_ms, cli::millisecondsOf([&] { models.recognize(everything); }));
+  }
   double achieved_hz = 0.0;
   std::size_t instances_seen = 0;
   {
     // A list parameter cannot be given on a command line: set it before the node starts.
     handle.setParam("/bench_continuous/model_files", model_files);
-    Node node(nodes + "/scene_recognizer",
-              {"__name:=bench_continuous", "_rate:=10", "_estimate_timeout:=0"});
+    Node node(
+        nodes + "/scene_recognizer",
+        {"__name:=bench_continuous", "_rate:=" + std::to_string(kAskedHz), "_estimate_timeout:=0"});
     ros::Publisher objects = handle.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
     std::vector<ros::WallTime> arrivals;
     ros::Subscriber subscriber = handle.subscribe<asr_msgs::SceneInstanceList>(
@@ -168,7 +191,7 @@ int main(int argc, char** argv) {
           asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene)
               .configuration(0);
       for (auto& message : messagesOf(configuration))
-        list.objects.push_back(message);
+        list.objects.push_back(message);  // the node keeps the newest estimate per object
     }
     objects.publish(list);
     const ros::WallTime start = ros::WallTime::now();
@@ -176,14 +199,13 @@ int main(int argc, char** argv) {
       ros::spinOnce();
       ros::WallDuration(0.002).sleep();
     }
-    // Rate over the steady part: from the first list with instances, over kRateWindow.
-    if (arrivals.size() >= 2) {
-      std::size_t count = 0;
-      for (const ros::WallTime& arrival : arrivals)
-        count += (arrival - arrivals.front()).toSec() <= kRateWindow;
-      achieved_hz =
-          (count - 1) / std::min(kRateWindow, (arrivals.back() - arrivals.front()).toSec());
-    }
+    // Rate over the steady part: lists with instances within kRateWindow of the first.
+    std::size_t last = 0;
+    while (last + 1 < arrivals.size() &&
+           (arrivals[last + 1] - arrivals.front()).toSec() <= kRateWindow)
+      ++last;
+    if (last > 0)
+      achieved_hz = last / (arrivals[last] - arrivals.front()).toSec();
   }
   std::filesystem::remove_all(work);
 
@@ -194,12 +216,17 @@ int main(int argc, char** argv) {
   std::printf("  library recognition: median %.3f ms\n", library_median);
   std::printf("  node service call:   median %.3f ms (%.2fx the library)\n", node_median,
               node_median / library_median);
-  std::printf("continuous mode, ten kitchen scenes loaded (complete topologies), rate 10 Hz:\n");
+  std::printf("continuous mode, ten kitchen scenes loaded (complete topologies), ~rate %d Hz:\n",
+              kAskedHz);
   std::printf("  scene_instances published at %.2f Hz (up to %zu instances per list)\n",
               achieved_hz, instances_seen);
+  std::printf(
+      "  one tick (all ten trees on every estimate) takes %.2f ms in the library: up to "
+      "%.0f Hz\n",
+      tick_ms, 1000.0 / tick_ms);
   std::printf("\nTargets\n");
   const bool latency_met = node_median <= 2.0 * library_median;
-  const bool rate_met = achieved_hz >= 10.0 - 0.2;  // timer jitter of one tick in 10 s
+  const bool rate_met = achieved_hz >= 10.0;
   std::printf("  %s  service latency %.3f ms <= 2x library %.3f ms\n",
               latency_met ? "met   " : "MISSED", node_median, library_median);
   std::printf("  %s  publishing rate %.2f Hz >= 10 Hz with ten scenes loaded\n",
