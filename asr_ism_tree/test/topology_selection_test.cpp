@@ -10,6 +10,7 @@
 #include "asr_ism/testing/input_error_of.hpp"
 #include "asr_ism/testing/recordings_skip.hpp"
 #include "asr_ism/testing/temp_dir.hpp"
+#include "asr_ism_tree/topology_selection/relation_violations.hpp"
 #include "asr_ism_tree/topology_selection/topology_cost.hpp"
 #include "asr_ism_tree/topology_selection/topology_neighbours.hpp"
 #include "asr_ism_tree/topology_selection/topology_selection.hpp"
@@ -109,6 +110,83 @@ TEST(TopologyCost, RefusesNegativeOrZeroWeights) {
       std::string::npos);
 }
 
+TEST(TopologyCost, AnythingOverTheWorkBudgetCostsMoreThanEverythingWithinIt) {
+  const TopologyCost cost(measures(0.4, 100), measures(0.0, 1100), 1.0, 1.0, 500.0);
+  EXPECT_DOUBLE_EQ(cost(measures(0.4, 100)), 1.0);  // within the budget: as without one
+  EXPECT_DOUBLE_EQ(cost(measures(0.8, 500)), 2.0 + 0.4);
+  const double over = cost(measures(0.0, 600));
+  EXPECT_GE(over, TopologyCost::kOverBudget);
+  EXPECT_GT(over, cost(measures(0.8, 500)));
+  EXPECT_LT(over, cost(measures(0.0, 900)));  // over it, less work is better
+  TopologyMeasures stopped_early = measures(0.0, 400);
+  stopped_early.over_budget = true;
+  EXPECT_GE(cost(stopped_early), TopologyCost::kOverBudget);
+}
+
+// Three objects in a row, 10 cm apart, demonstrated in five steps that move the whole row; object
+// 2 also turns a little, as a recorded object would.
+asr_ism::Demonstration rowOfThree() {
+  asr_ism::Demonstration demonstration("row", objects(3));
+  for (int step = 0; step < 5; ++step) {
+    demonstration.addStep();
+    for (int object = 0; object < 3; ++object) {
+      const double turn = object == 2 ? 0.02 * step : 0.0;
+      demonstration.setPose(
+          step, object,
+          {Eigen::Vector3d(0.5 * step + 0.1 * object, 0.0, 0.0),
+           Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ()))});
+    }
+  }
+  return demonstration;
+}
+
+TEST(RelationViolations, AMovedObjectBreaksItsRelationsAndNoOthers) {
+  const asr_ism::Demonstration demonstration = rowOfThree();
+  asr_ism::Configuration demonstrated = demonstration.configuration(3);
+  asr_ism::Configuration moved = demonstrated;
+  moved[2].pose.position.y() += 0.3;  // object 2 pushed 30 cm aside
+  asr_ism::Configuration slightly = demonstrated;
+  slightly[2].pose.position.y() += 0.01;  // 1 cm: within what the ISM tolerates
+  asr_ism::Configuration without = demonstrated;
+  without.pop_back();  // object 2 absent
+  const RelationViolations violations(demonstration, {demonstrated, moved, slightly, without}, {},
+                                      0.05);
+  ASSERT_EQ(violations.configurationCount(), 4u);
+  for (std::size_t c : {0u, 2u, 3u}) {
+    EXPECT_FALSE(violations.breaks(c, 0, 1)) << c;
+    EXPECT_FALSE(violations.breaks(c, 0, 2)) << c;
+    EXPECT_FALSE(violations.breaks(c, 1, 2)) << c;
+  }
+  EXPECT_FALSE(violations.breaks(1, 0, 1));
+  EXPECT_TRUE(violations.breaks(1, 0, 2));
+  EXPECT_TRUE(violations.breaks(1, 2, 1));  // either order names the pair
+
+  RelationTopology star_at_0(objects(3));
+  star_at_0.addRelation(0, 1);
+  star_at_0.addRelation(0, 2);
+  EXPECT_EQ(violations.predictedAccepted(star_at_0), 3u);
+  EXPECT_EQ(violations.predictedAccepted(chain(3)), 3u);
+  EXPECT_EQ(violations.predictedAccepted(RelationTopology(objects(3))), 4u);
+}
+
+TEST(RelationViolations, GrowingAddsOnlyTheRelationsThatCatchSomething) {
+  const asr_ism::Demonstration demonstration = rowOfThree();
+  asr_ism::Configuration far = demonstration.configuration(2);
+  far[2].pose.position.z() += 0.5;  // only relations to object 2 break
+  const RelationViolations far_violations(demonstration, {far}, {}, 0.05);
+  RelationTopology star_at_1(objects(3));
+  star_at_1.addRelation(1, 0);
+  star_at_1.addRelation(1, 2);
+  EXPECT_EQ(withCatchingRelations(star_at_1, far_violations, 0), star_at_1);
+  // A topology without relations to object 2 gets one that catches the raised object.
+  RelationTopology only_01(objects(3));
+  only_01.addRelation(0, 1);
+  const RelationTopology caught = withCatchingRelations(only_01, far_violations, 0);
+  EXPECT_EQ(caught.relationCount(), 2u);
+  EXPECT_TRUE(caught.hasRelation(0, 2));  // the first pair in object order that catches it
+  EXPECT_EQ(far_violations.predictedAccepted(caught), 0u);
+}
+
 TEST(TestConfigurations, ZeroRequestedIsAnError) {
   const asr_ism::Demonstration demonstration =
       asr_ism::makeSyntheticDemonstration(3, 10, 5, "shelf");
@@ -204,6 +282,47 @@ TEST_F(TopologySelectionOnRecordings, TestConfigurationsAreLabelledStoredAndRead
   EXPECT_NE(twice.find("already holds"), std::string::npos) << twice;
   EXPECT_NE(inputErrorOf([&] { readTestConfigurations(path, "table"); }).find("table"),
             std::string::npos);
+}
+
+TEST_F(TopologySelectionOnRecordings, ATimeBudgetIsKeptOrTheLeastWorkIsChosen) {
+  options_.max_evaluations = 20;
+  const TopologySelectionResult free = selectTopology(demonstration_, options_);
+  EXPECT_EQ(free.max_mean_work, 0.0);
+  // A budget between the star's and the complete tree's times is converted into work, and the
+  // selected topology's work stays within it.
+  options_.max_duration_ms = 0.5 * (free.star_measures.mean_ms + free.complete_measures.mean_ms);
+  const TopologySelectionResult budgeted = selectTopology(demonstration_, options_);
+  EXPECT_GT(budgeted.max_mean_work, 0.0);
+  EXPECT_LT(budgeted.cost, TopologyCost::kOverBudget);
+  EXPECT_LE(budgeted.measures.mean_work, budgeted.max_mean_work);
+  // A budget nothing meets: the result is over it, and no topology costs more work than the star
+  // among those a search led by work alone would reach from it.
+  options_.max_duration_ms = 1e-9;
+  const TopologySelectionResult impossible = selectTopology(demonstration_, options_);
+  EXPECT_GE(impossible.cost, TopologyCost::kOverBudget);
+  EXPECT_LE(impossible.measures.mean_work, impossible.star_measures.mean_work * 1.5);
+  options_.max_duration_ms = -1.0;
+  EXPECT_NE(inputErrorOf([&] { selectTopology(demonstration_, options_); }).find("time budget"),
+            std::string::npos);
+}
+
+TEST_F(TopologySelectionOnRecordings, EvaluationStopsEarlyOverTheWorkBudget) {
+  const IsmTree complete =
+      generateIsmTree(demonstration_, RelationTopology::complete(demonstration_.objects()), {});
+  const TestConfigurations tests =
+      generateTestConfigurations(demonstration_, complete, 40, 3, 0.99);
+  const RelationTopology topology = RelationTopology::complete(demonstration_.objects());
+  const TopologyMeasures full = evaluateTopology(demonstration_, topology, tests, {}, 0.99);
+  EXPECT_FALSE(full.over_budget);
+  EXPECT_EQ(full.false_positive_rate, 0.0);
+  const TopologyMeasures stopped =
+      evaluateTopology(demonstration_, topology, tests, {}, 0.99, full.mean_work / 4);
+  EXPECT_TRUE(stopped.over_budget);
+  // Within the budget nothing changes.
+  const TopologyMeasures within =
+      evaluateTopology(demonstration_, topology, tests, {}, 0.99, full.mean_work * 2);
+  EXPECT_FALSE(within.over_budget);
+  EXPECT_EQ(within.mean_work, full.mean_work);
 }
 
 TEST_F(TopologySelectionOnRecordings, ADisconnectedStartIsRefused) {

@@ -8,13 +8,14 @@
 namespace asr_ism_tree {
 
 TopologyCost::TopologyCost(const TopologyMeasures& star, const TopologyMeasures& complete,
-                           double alpha, double beta)
+                           double alpha, double beta, double max_mean_work)
     : alpha_(alpha),
       beta_(beta),
       error_low_(std::min(errors(star), errors(complete))),
       error_high_(std::max(errors(star), errors(complete))),
       work_low_(std::min(star.mean_work, complete.mean_work)),
-      work_high_(std::max(star.mean_work, complete.mean_work)) {
+      work_high_(std::max(star.mean_work, complete.mean_work)),
+      max_mean_work_(max_mean_work) {
   if (!std::isfinite(alpha) || !std::isfinite(beta) || alpha < 0 || beta < 0 || alpha + beta <= 0) {
     throw asr_ism::InputError(
         "the cost weights alpha and beta must be >= 0, finite and not both 0");
@@ -30,6 +31,8 @@ double TopologyCost::errors(const TopologyMeasures& measures) {
 }
 
 double TopologyCost::operator()(const TopologyMeasures& measures) const {
+  if (max_mean_work_ > 0.0 && (measures.over_budget || measures.mean_work > max_mean_work_))
+    return kOverBudget + measures.mean_work / max_mean_work_;
   return alpha_ * normalised(errors(measures), error_low_, error_high_) +
          beta_ * normalised(measures.mean_work, work_low_, work_high_);
 }

@@ -10,7 +10,7 @@ namespace asr_ism_tree {
 TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
                                   const RelationTopology& topology, const TestConfigurations& tests,
                                   const asr_ism::IsmRecognitionParameters& parameters,
-                                  double threshold) {
+                                  double threshold, double max_mean_work) {
   const IsmTree tree = generateIsmTree(demonstration, topology, parameters);
   const TreeRecognizer recognizer(tree);
   TopologyMeasures measures;
@@ -20,6 +20,8 @@ TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
 
   std::size_t work = 0;
   double total_ms = 0.0;
+  std::size_t recognised = 0;
+  const double max_work = max_mean_work > 0.0 ? max_mean_work * tests.size() : 0.0;
   // Recognises one configuration; true if it is accepted.
   auto accepted = [&](const asr_ism::Configuration& configuration) {
     TreeRecognitionStats stats;
@@ -30,18 +32,28 @@ TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
     work += stats.isms.comparisons;
     return !instances.empty() && instances.front().confidence >= threshold;
   };
-  std::size_t true_positives = 0;
-  for (const auto& configuration : tests.valid)
+  auto overBudget = [&] { return max_work > 0.0 && static_cast<double>(work) > max_work; };
+  std::size_t true_positives = 0, valid_seen = 0, invalid_seen = 0;
+  for (const auto& configuration : tests.valid) {
+    if (overBudget())
+      break;
     true_positives += accepted(configuration);
-  for (const auto& configuration : tests.invalid)
+    ++valid_seen;
+  }
+  for (const auto& configuration : tests.invalid) {
+    if (overBudget())
+      break;
     measures.false_positives += accepted(configuration);
+    ++invalid_seen;
+  }
+  measures.over_budget = overBudget();
+  recognised = valid_seen + invalid_seen;
 
-  const double count = static_cast<double>(tests.size());
+  const double count = static_cast<double>(recognised);
   measures.false_positive_rate =
-      tests.invalid.empty() ? 0.0
-                            : static_cast<double>(measures.false_positives) / tests.invalid.size();
+      invalid_seen == 0 ? 0.0 : static_cast<double>(measures.false_positives) / invalid_seen;
   measures.true_positive_rate =
-      tests.valid.empty() ? 1.0 : static_cast<double>(true_positives) / tests.valid.size();
+      valid_seen == 0 ? 1.0 : static_cast<double>(true_positives) / valid_seen;
   measures.mean_ms = count > 0 ? total_ms / count : 0.0;
   measures.mean_work = count > 0 ? static_cast<double>(work) / count : 0.0;
   return measures;

@@ -12,10 +12,16 @@ namespace asr_ism_tree {
 /// extremes of the search space: the star is fastest and the least strict, the complete topology
 /// slowest and, by construction of the labels, without false positives). Values outside the
 /// range are not clamped, so a topology worse than both extremes costs more than 1 per term.
+/// A topology over the work budget (TopologyMeasures::over_budget, or mean work above
+/// `max_mean_work` if that is > 0) costs kOverBudget + its work / the budget: more than any
+/// topology within the budget, and the less work the better, so a search that starts over the
+/// budget is led towards it.
 class TopologyCost {
  public:
+  static constexpr double kOverBudget = 1000.0;
+
   TopologyCost(const TopologyMeasures& star, const TopologyMeasures& complete, double alpha,
-               double beta);
+               double beta, double max_mean_work = 0.0);
 
   double operator()(const TopologyMeasures& measures) const;
 
@@ -30,6 +36,7 @@ class TopologyCost {
   double beta_;
   double error_low_, error_high_;
   double work_low_, work_high_;
+  double max_mean_work_;
 };
 
 }  // namespace asr_ism_tree

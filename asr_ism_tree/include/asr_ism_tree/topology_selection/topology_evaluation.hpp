@@ -23,13 +23,19 @@ struct TopologyMeasures {
   double mean_ms = 0.0;
   /// Mean vote-to-hypothesis comparisons per configuration: the machine-independent cost.
   double mean_work = 0.0;
+  /// The evaluation stopped early because the work exceeded `max_mean_work`: the rates and means
+  /// cover only the configurations recognised before that, and the topology is over budget.
+  bool over_budget = false;
 };
 
 /// Learns the tree of `topology` and recognises every test configuration with it (on the
-/// calling thread). Throws InputError for a disconnected topology.
+/// calling thread). Stops early, marking the result over budget, once the work exceeds
+/// `max_mean_work` per configuration on average over all of them (no limit if <= 0): a search
+/// need not finish measuring a topology it cannot use. Throws InputError for a disconnected
+/// topology.
 TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
                                   const RelationTopology& topology, const TestConfigurations& tests,
                                   const asr_ism::IsmRecognitionParameters& parameters,
-                                  double threshold);
+                                  double threshold, double max_mean_work = 0.0);
 
 }  // namespace asr_ism_tree

@@ -17,8 +17,15 @@ enum class TopologySearchMethod { kHillClimbing, kSimulatedAnnealing };
 struct TopologySelectionOptions {
   std::size_t test_count = 600;  // test configurations generated (valid + invalid)
   std::uint32_t seed = 1;
-  double alpha = 1.0;       // weight of normalised numFPs in the cost
-  double beta = 1.0;        // weight of normalised work (avgDur) in the cost
+  // A false positive makes the robot act on a scene that is not there, while a millisecond more
+  // of recognition is rarely noticed next to camera moves of seconds: errors weigh more.
+  double alpha = 10.0;  // weight of normalised numFPs (+ valid configurations rejected)
+  double beta = 1.0;    // weight of normalised work (avgDur) in the cost
+  /// > 0: the recognition time budget in ms per configuration. It is converted once into a work
+  /// budget (comparisons) by the time per comparison measured on the star and complete trees,
+  /// and topologies above it lose to every topology within it (see TopologyCost). The search
+  /// stays deterministic for a given conversion; the conversion depends on the machine.
+  double max_duration_ms = 0.0;
   double threshold = 0.99;  // confidence at which a configuration counts as recognised
   int max_tree_height = 0;  // < 1: no limit
   unsigned threads = 0;     // 0: all cores
@@ -31,8 +38,9 @@ struct TopologySelectionOptions {
   /// climbing takes the best of the first batch that improves, annealing the first accepted.
   /// Not tied to the thread count, so that the result does not depend on it.
   std::size_t batch_size = 8;
-  /// Hill climbing: new starts (the best topology so far with random relations exchanged) after
-  /// a local optimum.
+  /// Hill climbing: new starts after a local optimum, while evaluations are left: the best star
+  /// grown by the relations the invalid configurations break (see RelationViolations) unless the
+  /// search started there, then the best topology so far with random relations exchanged.
   std::size_t restarts = 2;
   /// Simulated annealing: the start temperature in cost units and its factor per step.
   double start_temperature = 0.2;
@@ -57,7 +65,8 @@ struct TopologySelectionResult {
   RelationTopology star;  // the star that normalises the cost (centre by chooseStarCenter)
   TopologyMeasures star_measures;
   TopologyMeasures complete_measures;
-  std::size_t evaluated = 0;  // distinct topologies evaluated
+  std::size_t evaluated = 0;   // distinct topologies evaluated
+  double max_mean_work = 0.0;  // the work budget max_duration_ms was converted to (0: none)
   TestConfigurations tests;
 };
 
