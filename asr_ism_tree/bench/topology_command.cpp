@@ -162,16 +162,23 @@ void plotRuntimes(const std::vector<TopologyRuntimePoint>& points, const std::st
 }  // namespace
 
 int runTopologyCommand(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments,
-                            {"out", "scenes", "recordings", "tests", "alpha", "beta",
-                             "max-evaluations", "seed", "synthetic-max-objects", "threads"},
-                            {"json", "no-synthetic"});
+  const CommandLine options(
+      arguments,
+      {"out", "scenes", "recordings", "tests", "alpha", "beta", "max-duration-ms",
+       "max-evaluations", "seed", "synthetic-max-objects", "threads"},
+      {"json", "no-synthetic"});
   TopologySelectionOptions selection;
   selection.test_count = static_cast<std::size_t>(options.integer("tests", 600));
   if (selection.test_count == 0)
     throw UsageError{"--tests must be at least 1"};
   selection.alpha = options.number("alpha", selection.alpha);
   selection.beta = options.number("beta", selection.beta);
+  // The search is told the deployment budget the table checks, as a user of RTS would tell it,
+  // less 10 %: the budget is converted into work by the star's and complete tree's time per
+  // comparison, and trees of more, smaller ISMs take up to ~10 % more per comparison.
+  selection.max_duration_ms = options.number("max-duration-ms", 0.9 * kMaxOptimisedMs);
+  if (!(selection.max_duration_ms >= 0))
+    throw UsageError{"--max-duration-ms must be >= 0 (0: no budget)"};
   selection.max_evaluations =
       static_cast<std::size_t>(options.integer("max-evaluations", selection.max_evaluations));
   selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed));

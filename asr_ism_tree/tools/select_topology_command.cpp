@@ -29,11 +29,12 @@ void printMeasures(const char* name, const TopologyMeasures& measures) {
 }  // namespace
 
 int runSelectTopology(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments,
-                            {"demo", "scene", "topology-out", "model", "tests", "seed", "alpha",
-                             "beta", "max-height", "max-evaluations", "method", "start", "threads",
-                             "tests-in", "tests-out", "bin-size", "max-angle-deg"},
-                            {});
+  const CommandLine options(
+      arguments,
+      {"demo", "scene", "topology-out", "model", "tests", "seed", "alpha", "beta",
+       "max-duration-ms", "max-height", "max-evaluations", "method", "start", "threads", "tests-in",
+       "tests-out", "bin-size", "max-angle-deg"},
+      {});
   const std::string demo_path = options.required("demo");
   const std::string scene = options.required("scene");
   const std::string topology_out = options.required("topology-out");
@@ -49,6 +50,9 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   selection.beta = options.number("beta", selection.beta);
   if (!(selection.alpha >= 0 && selection.beta >= 0 && selection.alpha + selection.beta > 0))
     throw UsageError{"--alpha and --beta must be >= 0 and not both 0"};
+  selection.max_duration_ms = options.number("max-duration-ms", 0.0);
+  if (!(selection.max_duration_ms >= 0))
+    throw UsageError{"--max-duration-ms must be >= 0 (0: no budget)"};
   selection.max_tree_height = static_cast<int>(options.integer("max-height", 0));
   const long long evaluations =
       options.integer("max-evaluations", static_cast<long long>(selection.max_evaluations));
@@ -99,6 +103,9 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   std::printf("  %zu test configurations: %zu valid, %zu invalid; %zu topologies evaluated\n",
               result.tests.size(), result.tests.valid.size(), result.tests.invalid.size(),
               result.evaluated);
+  if (result.max_mean_work > 0)
+    std::printf("  time budget %.3f ms per configuration = %.0f comparisons on this machine\n",
+                selection.max_duration_ms, result.max_mean_work);
   printMeasures("star", result.star_measures);
   printMeasures("optimised", result.measures);
   printMeasures("complete", result.complete_measures);

@@ -2,7 +2,8 @@
 // model file, then exits (0 on success, 1 on bad input). Parameters (private):
 // demonstration_file and model_file (required), scenes (list or one; empty: every scene of the
 // file), topology (star | complete | optimised, default optimised), and for optimised:
-// tests (600), seed (1), alpha (1), beta (1), max_evaluations (160). A model file is added to:
+// tests (600), seed (1), alpha (10), beta (1), max_duration_ms (0: no time budget),
+// max_evaluations (160). A model file is added to:
 // other scenes and tables in it stay; a scene learned again replaces its previous tree.
 #include <ros/ros.h>
 
@@ -38,6 +39,8 @@ void train(const ros::NodeHandle& parameters) {
   selection.beta = optionalParameter<double>(parameters, "beta", selection.beta);
   checkParameter(parameters, "alpha", selection.alpha >= 0, ">= 0");
   checkParameter(parameters, "beta", selection.beta >= 0, ">= 0");
+  selection.max_duration_ms = optionalParameter<double>(parameters, "max_duration_ms", 0.0);
+  checkParameter(parameters, "max_duration_ms", selection.max_duration_ms >= 0, ">= 0");
   const int evaluations = optionalParameter<int>(parameters, "max_evaluations", 160);
   checkParameter(parameters, "max_evaluations", evaluations >= 2, ">= 2");
   selection.max_evaluations = static_cast<std::size_t>(evaluations);
