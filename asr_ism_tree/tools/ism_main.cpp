@@ -12,10 +12,10 @@ const char* const kUsage =
     "  info       --model M [--scene NAME]\n"
     "  recognize  --model M --scene NAME (--objects FILE | --demo DB --set K) [--json]\n"
     "  select-topology --demo DB --scene NAME --topology-out FILE --model OUT [--tests N]\n"
-    "             [--seed S] [--alpha A] [--beta B] [--max-duration-ms D] [--max-height H] "
-    "[--max-evaluations E]\n"
-    "             [--method hill-climbing|annealing] [--start FILE] [--threads T]\n"
-    "             [--tests-in DB | --tests-out DB] [--bin-size M] [--max-angle-deg D]\n";
+    "             [--seed S] [--alpha A] [--beta B] [--max-duration-ms D] [--max-height H]\n"
+    "             [--max-evaluations E] [--method hill-climbing|annealing] [--start FILE]\n"
+    "             [--threads T] [--tests-in DB | --tests-out DB]\n"
+    "             [--bin-size M] [--max-angle-deg D]\n";
 
 }  // namespace
 

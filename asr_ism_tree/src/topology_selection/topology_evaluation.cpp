@@ -20,7 +20,6 @@ TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
 
   std::size_t work = 0;
   double total_ms = 0.0;
-  std::size_t recognised = 0;
   const double max_work = max_mean_work > 0.0 ? max_mean_work * tests.size() : 0.0;
   // Recognises one configuration; true if it is accepted.
   auto accepted = [&](const asr_ism::Configuration& configuration) {
@@ -47,9 +46,8 @@ TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
     ++invalid_seen;
   }
   measures.over_budget = overBudget();
-  recognised = valid_seen + invalid_seen;
 
-  const double count = static_cast<double>(recognised);
+  const double count = static_cast<double>(valid_seen + invalid_seen);
   measures.false_positive_rate =
       invalid_seen == 0 ? 0.0 : static_cast<double>(measures.false_positives) / invalid_seen;
   measures.true_positive_rate =
