@@ -230,6 +230,24 @@ TEST_F(TopologySelectionOnRecordings, OptimisedIsNoWorseThanStarAndNoSlowerThanC
   EXPECT_LE(result.measures.mean_work, result.complete_measures.mean_work);
 }
 
+TEST(TopologySelection, NothingMeasuredBeatsTheResultNotEvenTheCompleteTopology) {
+  REQUIRE_RECORDINGS();
+  // Spuelkorb_3 (10 objects): with the work not weighed, no sparser tree matches the complete
+  // topology's zero errors, and a climb from the stars does not get there within the
+  // evaluations; the search must still end on the best topology it measured.
+  const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
+      asr_ism::testing::recording("story_1.sqlite"), "Spuelkorb_3");
+  TopologySelectionOptions options;
+  options.test_count = 60;
+  options.max_evaluations = 16;
+  options.beta = 0.0;
+  options.threads = 2;
+  const TopologySelectionResult result = selectTopology(demonstration, options);
+  EXPECT_EQ(result.cost, 0.0);
+  EXPECT_EQ(result.measures.false_positive_rate, 0.0);
+  EXPECT_EQ(result.measures.true_positive_rate, 1.0);
+}
+
 TEST_F(TopologySelectionOnRecordings, TheSameSeedGivesTheSameTopologyOnAnyThreadCount) {
   const TopologySelectionResult first = selectTopology(demonstration_, options_);
   options_.threads = 1;

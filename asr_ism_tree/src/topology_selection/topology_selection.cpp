@@ -31,6 +31,9 @@ using Clock = std::chrono::steady_clock;
 // 75 % for the complete topology.
 constexpr double kBrokenRelationDeficit = 0.05;
 
+// Neighbours evaluated per batch while the climb is over the work budget.
+constexpr std::size_t kOverBudgetBatchSize = 2;
+
 // One character per object pair: the identity of a topology in the memo.
 std::string keyOf(const RelationTopology& topology) {
   std::string key;
@@ -42,6 +45,7 @@ std::string keyOf(const RelationTopology& topology) {
 }
 
 struct Evaluated {
+  RelationTopology topology;
   TopologyMeasures measures;
   double cost = std::numeric_limits<double>::infinity();
 };
@@ -69,6 +73,16 @@ class Evaluator {
       entry.cost = (*cost_)(entry.measures);
   }
 
+  // The cheapest topology evaluated so far (ties: the first in key order), or nullptr.
+  const Evaluated* cheapest() const {
+    const Evaluated* found = nullptr;
+    for (const auto& [key, entry] : memo_) {
+      if (!found || entry.cost < found->cost)
+        found = &entry;
+    }
+    return found;
+  }
+
   bool budgetLeft() const { return memo_.size() < options_.max_evaluations; }
   std::size_t evaluated() const { return memo_.size(); }
 
@@ -92,6 +106,7 @@ class Evaluator {
     });
     for (std::size_t k = 0; k < fresh.size(); ++k) {
       Evaluated& entry = memo_[keys[fresh[k]]];
+      entry.topology = topologies[fresh[k]];
       entry.measures = measured[k];
       if (cost_)
         entry.cost = (*cost_)(entry.measures);
@@ -177,11 +192,17 @@ Candidate climb(Candidate current, Evaluator& evaluator, const TopologySelection
   while (evaluator.budgetLeft()) {
     const std::vector<RelationTopology> neighbours =
         orderedNeighbours(current.topology, options.max_tree_height, violations, random);
+    // Over the work budget the cost is the work alone, which nearly every removal lowers: small
+    // batches then cross the over-budget region (e.g. down from a complete topology) in a
+    // quarter of the evaluations.
+    const std::size_t step = current.cost >= TopologyCost::kOverBudget
+                                 ? std::min(kOverBudgetBatchSize, batch_size)
+                                 : batch_size;
     bool moved = false;
-    for (std::size_t first = 0; first < neighbours.size() && !moved; first += batch_size) {
+    for (std::size_t first = 0; first < neighbours.size() && !moved; first += step) {
       const std::vector<RelationTopology> batch(
           neighbours.begin() + first,
-          neighbours.begin() + std::min(neighbours.size(), first + batch_size));
+          neighbours.begin() + std::min(neighbours.size(), first + step));
       const std::vector<const Evaluated*> results = evaluator.evaluate(batch);
       std::size_t chosen = batch.size();
       double chosen_cost = current.cost - 1e-12;
@@ -308,39 +329,52 @@ TopologySelectionResult selectTopology(
                           options.beta, result.max_mean_work);
   evaluator.setCost(cost);
 
-  // The start: the given topology, or the best of all stars.
+  // The start: the given topology, or the best of all stars and the complete topology (which
+  // wins where its work is within the budget and the stars make many errors; the climb then
+  // removes the relations that the errors do not need).
   std::vector<RelationTopology> starts;
   if (options.start) {
     starts.push_back(*options.start);
   } else {
     for (std::size_t center = 0; center < objects.size(); ++center)
       starts.push_back(RelationTopology::star(objects, center));
+    starts.push_back(complete);
   }
   Candidate best;
+  Candidate best_star = {result.star, cost(result.star_measures)};
   {
     const auto results = evaluator.evaluate(starts);
     for (std::size_t i = 0; i < starts.size(); ++i) {
-      const double start_cost = results[i] ? cost(results[i]->measures) : best.cost;
-      if (start_cost < best.cost - 1e-12)
-        best = {starts[i], start_cost};
+      if (!results[i])
+        continue;
+      const Candidate candidate = {starts[i], results[i]->cost};
+      if (candidate.cost < best.cost - 1e-12)
+        best = candidate;
+      if (!options.start && i < objects.size() && candidate.cost < best_star.cost - 1e-12)
+        best_star = candidate;
     }
     if (!std::isfinite(best.cost))  // the budget ended before any start: use the star
-      best = {result.star, cost(result.star_measures)};
+      best = best_star;
   }
   const RelationViolations violations(demonstration, result.tests.invalid, options.parameters,
                                       kBrokenRelationDeficit);
-  // The best star grown by the relations that the invalid configurations break: a start near
-  // the few-false-positive topologies that climbing from the star rarely reaches. The search
-  // starts there if it costs less than the best star, else it is the climb's first restart.
-  std::vector<RelationTopology> grown_starts;
+  // Restarts from the other ends of the search space: the best star grown by the relations that
+  // the invalid configurations break (near the few-false-positive topologies that climbing from a
+  // star rarely reaches), and the complete topology (a climb down from it keeps the relations the
+  // errors need). Either is the start instead if it costs less than the best start.
+  std::vector<RelationTopology> other_starts;
   if (!options.start) {
     const RelationTopology grown =
-        withCatchingRelations(best.topology, violations, options.max_tree_height);
-    const auto results = evaluator.evaluate({grown});
-    if (results[0] && results[0]->cost < best.cost - 1e-12)
-      best = {grown, results[0]->cost};
-    else
-      grown_starts.push_back(grown);
+        withCatchingRelations(best_star.topology, violations, options.max_tree_height);
+    for (const RelationTopology& start : {grown, complete}) {
+      const auto results = evaluator.evaluate({start});
+      if (results[0] && results[0]->cost < best.cost - 1e-12) {
+        other_starts.push_back(best.topology);
+        best = {start, results[0]->cost};
+      } else if (start != best.topology) {
+        other_starts.push_back(start);
+      }
+    }
   }
   evaluator.report(best.cost, best.cost);
 
@@ -351,10 +385,10 @@ TopologySelectionResult selectTopology(
   } else {
     climb(best, evaluator, options, violations, batch_size, random, best);
     for (std::size_t restart = 0; restart < options.restarts && evaluator.budgetLeft(); ++restart) {
-      // The grown star first, then starts near the best topology so far.
+      // The other ends first, then starts near the best topology so far.
       const RelationTopology start =
-          restart < grown_starts.size()
-              ? grown_starts[restart]
+          restart < other_starts.size()
+              ? other_starts[restart]
               : perturbed(best.topology, 2 + restart, options.max_tree_height, random);
       const auto results = evaluator.evaluate({start});
       if (!results[0])
@@ -363,17 +397,34 @@ TopologySelectionResult selectTopology(
     }
   }
 
-  result.topology = best.topology;
-  result.cost = best.cost;
-  result.evaluated = evaluator.evaluated();
   // The reported measures are taken again one after the other on this thread: the wall-clock
   // times of the parallel search include the other threads' contention.
   auto measure = [&](const RelationTopology& topology) {
     return evaluateTopology(demonstration, topology, result.tests, options.parameters,
                             options.threshold);
   };
+  const Evaluated* chosen = evaluator.cheapest();
+  result.measures = measure(chosen->topology);
+  // The work budget was converted by the star's and complete tree's time per comparison, but
+  // trees of more, smaller ISMs take up to a quarter longer per comparison. If the chosen tree,
+  // measured alone, misses the time budget, the work budget shrinks by its excess and the
+  // cheapest topology evaluated within that is chosen instead.
+  for (int round = 0; round < 3 && options.max_duration_ms > 0.0 &&
+                      result.measures.mean_ms > options.max_duration_ms;
+       ++round) {
+    result.max_mean_work *= options.max_duration_ms / result.measures.mean_ms;
+    evaluator.setCost(TopologyCost(result.star_measures, result.complete_measures, options.alpha,
+                                   options.beta, result.max_mean_work));
+    const Evaluated* within = evaluator.cheapest();
+    if (within == chosen)
+      break;  // nothing evaluated does better
+    chosen = within;
+    result.measures = measure(chosen->topology);
+  }
+  result.topology = chosen->topology;
+  result.cost = chosen->cost;
+  result.evaluated = evaluator.evaluated();
   result.star_measures = measure(result.star);
-  result.measures = measure(result.topology);
   result.complete_measures = measure(complete);
   return result;
 }

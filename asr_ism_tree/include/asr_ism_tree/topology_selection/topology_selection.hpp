@@ -39,9 +39,10 @@ struct TopologySelectionOptions {
   /// Not tied to the thread count, so that the result does not depend on it.
   std::size_t batch_size = 8;
   /// Hill climbing: new starts after a local optimum, while evaluations are left: the best star
-  /// grown by the relations the invalid configurations break (see RelationViolations) unless the
-  /// search started there, then the best topology so far with random relations exchanged.
-  std::size_t restarts = 2;
+  /// grown by the relations the invalid configurations break (see RelationViolations) and the
+  /// complete topology, unless the search started there, then the best topology so far with
+  /// random relations exchanged.
+  std::size_t restarts = 3;
   /// Simulated annealing: the start temperature in cost units and its factor per step.
   double start_temperature = 0.2;
   double cooling = 0.9;
