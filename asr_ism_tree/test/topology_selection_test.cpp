@@ -88,10 +88,27 @@ TEST(TopologyCost, NormalisesBetweenStarAndComplete) {
   EXPECT_DOUBLE_EQ(cost(measures(0.4, 100)), 1.0);   // the star: worst errors, least work
   EXPECT_DOUBLE_EQ(cost(measures(0.0, 1100)), 1.0);  // complete: no errors, most work
   EXPECT_DOUBLE_EQ(cost(measures(0.1, 350)), 0.25 + 0.25);
-  // Rejected valid configurations count as errors too.
+  // Rejected valid configurations count as errors too, by default as much as accepted invalid.
   EXPECT_DOUBLE_EQ(cost(measures(0.1, 350, 0.9)), 0.5 + 0.25);
   const TopologyCost weighted(measures(0.4, 100), measures(0.0, 1100), 3.0, 0.5);
   EXPECT_DOUBLE_EQ(weighted(measures(0.2, 600)), 1.5 + 0.25);
+}
+
+TEST(TopologyCost, EachTestConfigurationCountsOnce) {
+  // A quarter of the configurations valid: a valid one rejected is as bad as an invalid one
+  // accepted, so 10 % of the valid ones rejected weigh a third of 10 % of the invalid accepted.
+  const TopologyCost cost(measures(0.4, 100), measures(0.0, 1100), 1.0, 1.0, 0.0, 0.25);
+  EXPECT_DOUBLE_EQ(cost.errors(measures(0.4, 100)), 0.3);
+  EXPECT_DOUBLE_EQ(cost.errors(measures(0.0, 100, 0.9)), 0.025);
+  EXPECT_DOUBLE_EQ(cost(measures(0.1, 100, 0.9)), (0.075 + 0.025) / 0.3);
+  // Rejecting everything is not free: all valid configurations are errors.
+  EXPECT_DOUBLE_EQ(cost.errors(measures(0.0, 100, 0.0)), 0.25);
+  for (const double share : {-0.1, 1.5}) {
+    EXPECT_NE(inputErrorOf([&] {
+                TopologyCost(measures(0.4, 100), measures(0.0, 1100), 1.0, 1.0, 0.0, share);
+              }).find("share of valid"),
+              std::string::npos);
+  }
 }
 
 TEST(TopologyCost, EqualExtremesGiveZeroNotADivisionByZero) {

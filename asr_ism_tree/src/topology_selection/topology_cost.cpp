@@ -2,14 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "asr_ism/input_error.hpp"
 
 namespace asr_ism_tree {
 
 TopologyCost::TopologyCost(const TopologyMeasures& star, const TopologyMeasures& complete,
-                           double alpha, double beta, double max_mean_work)
-    : alpha_(alpha),
+                           double alpha, double beta, double max_mean_work, double valid_share)
+    : valid_share_(valid_share),
+      alpha_(alpha),
       beta_(beta),
       error_low_(std::min(errors(star), errors(complete))),
       error_high_(std::max(errors(star), errors(complete))),
@@ -20,14 +22,18 @@ TopologyCost::TopologyCost(const TopologyMeasures& star, const TopologyMeasures&
     throw asr_ism::InputError(
         "the cost weights alpha and beta must be >= 0, finite and not both 0");
   }
+  if (!(valid_share >= 0.0 && valid_share <= 1.0))
+    throw asr_ism::InputError("the share of valid test configurations must be in [0, 1] (got " +
+                              std::to_string(valid_share) + ")");
 }
 
 double TopologyCost::normalised(double value, double low, double high) {
   return high > low ? (value - low) / (high - low) : 0.0;
 }
 
-double TopologyCost::errors(const TopologyMeasures& measures) {
-  return measures.false_positive_rate + (1.0 - measures.true_positive_rate);
+double TopologyCost::errors(const TopologyMeasures& measures) const {
+  return (1.0 - valid_share_) * measures.false_positive_rate +
+         valid_share_ * (1.0 - measures.true_positive_rate);
 }
 
 double TopologyCost::operator()(const TopologyMeasures& measures) const {

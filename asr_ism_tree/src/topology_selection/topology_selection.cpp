@@ -34,6 +34,9 @@ constexpr double kBrokenRelationDeficit = 0.05;
 // Neighbours evaluated per batch while the climb is over the work budget.
 constexpr std::size_t kOverBudgetBatchSize = 2;
 
+// How often the chosen tree is timed alone and, if it misses the time budget, replaced.
+constexpr int kBudgetRechecks = 10;
+
 // One character per object pair: the identity of a topology in the memo.
 std::string keyOf(const RelationTopology& topology) {
   std::string key;
@@ -325,8 +328,11 @@ TopologySelectionResult selectTopology(
     result.max_mean_work = ms_per_work > 0.0 ? options.max_duration_ms / ms_per_work : 0.0;
     evaluator.setWorkBudget(result.max_mean_work);
   }
+  const std::size_t test_count = result.tests.valid.size() + result.tests.invalid.size();
+  const double valid_share =
+      test_count > 0 ? static_cast<double>(result.tests.valid.size()) / test_count : 0.5;
   const TopologyCost cost(result.star_measures, result.complete_measures, options.alpha,
-                          options.beta, result.max_mean_work);
+                          options.beta, result.max_mean_work, valid_share);
   evaluator.setCost(cost);
 
   // The start: the given topology, or the best of all stars and the complete topology (which
@@ -407,14 +413,16 @@ TopologySelectionResult selectTopology(
   result.measures = measure(chosen->topology);
   // The work budget was converted by the star's and complete tree's time per comparison, but
   // trees of more, smaller ISMs take up to a quarter longer per comparison. If the chosen tree,
-  // measured alone, misses the time budget, the work budget shrinks by its excess and the
-  // cheapest topology evaluated within that is chosen instead.
-  for (int round = 0; round < 3 && options.max_duration_ms > 0.0 &&
+  // measured alone, misses the time budget, the budget is converted again by its own time per
+  // comparison and the cheapest topology evaluated within that is chosen instead.
+  for (int round = 0; round < kBudgetRechecks && options.max_duration_ms > 0.0 &&
                       result.measures.mean_ms > options.max_duration_ms;
        ++round) {
-    result.max_mean_work *= options.max_duration_ms / result.measures.mean_ms;
+    result.max_mean_work =
+        std::min(result.max_mean_work,
+                 result.measures.mean_work * options.max_duration_ms / result.measures.mean_ms);
     evaluator.setCost(TopologyCost(result.star_measures, result.complete_measures, options.alpha,
-                                   options.beta, result.max_mean_work));
+                                   options.beta, result.max_mean_work, valid_share));
     const Evaluated* within = evaluator.cheapest();
     if (within == chosen)
       break;  // nothing evaluated does better

@@ -19,7 +19,7 @@ struct TopologySelectionOptions {
   std::uint32_t seed = 1;
   // A false positive makes the robot act on a scene that is not there, while a millisecond more
   // of recognition is rarely noticed next to camera moves of seconds: errors weigh more.
-  double alpha = 10.0;  // weight of normalised numFPs (+ valid configurations rejected)
+  double alpha = 10.0;  // weight of normalised errors (false positives + valid rejected)
   double beta = 1.0;    // weight of normalised work (avgDur) in the cost
   /// > 0: the recognition time budget in ms per configuration. It is converted once into a work
   /// budget (comparisons) by the time per comparison measured on the star and complete trees,
@@ -73,12 +73,13 @@ struct TopologySelectionResult {
 
 /// Relation Topology Selection: a local search over connected topologies of the demonstration's
 /// objects for one whose tree has few false positives (numFPs) and little recognition work,
-/// by the cost alpha * normalised numFPs + beta * normalised work (see TopologyCost). Starts
-/// from the best star (every object tried as centre) or options.start; neighbours add, remove or
-/// exchange one relation (topologyNeighbours); every topology is evaluated at most once, in
-/// parallel batches on `threads` threads. Deterministic for a seed: the cost uses the
+/// by the cost alpha * normalised errors + beta * normalised work (see TopologyCost). Starts
+/// from the cheapest of the stars (every object tried as centre) and the complete topology, or
+/// from options.start; neighbours add, remove or exchange one relation (topologyNeighbours);
+/// every topology is evaluated at most once, in parallel batches on `threads` threads, and the
+/// result is the cheapest evaluated. Deterministic for a seed: the cost uses the
 /// machine-independent work, never the wall-clock time, and results do not depend on the thread
-/// count. `tests`, if given, replaces generating test configurations. Throws InputError for bad
+/// count (with a time budget: for a given conversion of it into work). `tests`, if given, replaces generating test configurations. Throws InputError for bad
 /// options (0 tests, negative weights) or a demonstration of fewer than two objects.
 TopologySelectionResult selectTopology(
     const asr_ism::Demonstration& demonstration, const TopologySelectionOptions& options,
