@@ -59,6 +59,8 @@ struct TopologySelectionProgress {
   double seconds_left_estimate = 0.0;
 };
 
+/// The measures of the star, optimised and complete topologies are timed alone, in the fastest
+/// of three passes over the test configurations.
 struct TopologySelectionResult {
   RelationTopology topology;  // the optimised topology
   TopologyMeasures measures;  // and how it does
