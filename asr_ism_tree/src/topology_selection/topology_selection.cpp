@@ -401,7 +401,8 @@ TopologySelectionResult selectTopology(
       if (results[0] && results[0]->cost < best.cost - 1e-12) {
         other_starts.push_back(best.topology);
         best = {start, results[0]->cost};
-      } else if (start != best.topology) {
+      } else if (start != best.topology &&
+                 std::find(other_starts.begin(), other_starts.end(), start) == other_starts.end()) {
         other_starts.push_back(start);
       }
     }

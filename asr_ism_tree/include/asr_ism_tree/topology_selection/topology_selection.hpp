@@ -21,10 +21,12 @@ struct TopologySelectionOptions {
   // of recognition is rarely noticed next to camera moves of seconds: errors weigh more.
   double alpha = 10.0;  // weight of normalised errors (false positives + valid rejected)
   double beta = 1.0;    // weight of normalised work (avgDur) in the cost
-  /// > 0: the recognition time budget in ms per configuration. It is converted once into a work
+  /// > 0: the recognition time budget in ms per configuration. It is converted into a work
   /// budget (comparisons) by the time per comparison measured on the star and complete trees,
-  /// and topologies above it lose to every topology within it (see TopologyCost). The search
-  /// stays deterministic for a given conversion; the conversion depends on the machine.
+  /// and topologies above it lose to every topology within it (see TopologyCost); if the chosen
+  /// tree, timed alone, misses it, it is converted again by that tree's time per comparison.
+  /// The search stays deterministic for a given conversion; the conversion depends on the
+  /// machine.
   double max_duration_ms = 0.0;
   double threshold = 0.99;  // confidence at which a configuration counts as recognised
   int max_tree_height = 0;  // < 1: no limit
@@ -81,8 +83,9 @@ struct TopologySelectionResult {
 /// every topology is evaluated at most once, in parallel batches on `threads` threads, and the
 /// result is the cheapest evaluated. Deterministic for a seed: the cost uses the
 /// machine-independent work, never the wall-clock time, and results do not depend on the thread
-/// count (with a time budget: for a given conversion of it into work). `tests`, if given, replaces generating test configurations. Throws InputError for bad
-/// options (0 tests, negative weights) or a demonstration of fewer than two objects.
+/// count (with a time budget: for a given conversion of it into work). `tests`, if given,
+/// replaces generating test configurations. Throws InputError for bad options (0 tests, negative
+/// weights) or a demonstration of fewer than two objects.
 TopologySelectionResult selectTopology(
     const asr_ism::Demonstration& demonstration, const TopologySelectionOptions& options,
     const std::function<void(const TopologySelectionProgress&)>& progress = {},
