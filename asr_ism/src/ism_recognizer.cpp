@@ -29,12 +29,14 @@ std::int64_t objectiveLevel(double objective) {
 }
 
 // Votes as parallel arrays in bin order, so that a bin's neighbourhood is a few contiguous ranges.
+// Besides the vote's pose, each vote keeps where its input is (ox, oy, oz) and where the member
+// stands in the reference's frame (mx, my, mz), so a hypothesis can be carried back to the object.
 struct Votes {
-  std::vector<double> px, py, pz, qw, qx, qy, qz, weight;
+  std::vector<double> px, py, pz, qw, qx, qy, qz, weight, ox, oy, oz, mx, my, mz;
   std::vector<int> member, input, relative;
 
   void resize(std::size_t n) {
-    for (auto* column : {&px, &py, &pz, &qw, &qx, &qy, &qz, &weight})
+    for (auto* column : {&px, &py, &pz, &qw, &qx, &qy, &qz, &weight, &ox, &oy, &oz, &mx, &my, &mz})
       column->resize(n);
     for (auto* column : {&member, &input, &relative})
       column->resize(n);
@@ -106,7 +108,7 @@ class Search {
         atoms_of_input_(atoms_of_input),
         member_count_(ism.members.size()),
         stats_(stats),
-        bin_size_squared_(parameters.bin_size * parameters.bin_size),
+        support_radius_squared_(parameters.supportRadius() * parameters.supportRadius()),
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         sin_half_squared_max_angle_(sinHalfSquared(cos_half_max_angle_)) {
     vote_.resize(member_count_);
@@ -185,7 +187,7 @@ class Search {
   // exist then does not depend on how the bin grid groups the votes, so the answer is that of an
   // exhaustive search over all votes (a rigid motion of the input cannot change it).
   template <typename BarNow, typename Emit>
-  void searchBin(const Neighbourhood& n, BarNow bar_now, Emit emit) {
+  void searchBin(const Neighbourhood& n, bool drops_subsets, BarNow bar_now, Emit emit) {
     double threshold = bar_now();
     for (std::uint32_t c : n.candidates) {
       if (n.upper_bound < threshold - kBoundMargin)
@@ -208,7 +210,7 @@ class Search {
       emit(std::move(hypothesis));
       // Later candidates come later in key order, and none can score more, so with one input per
       // member they could only give a result this one makes redundant.
-      if (n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
+      if (drops_subsets && n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
           std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; }))
         return;
       threshold = bar_now();
@@ -229,17 +231,19 @@ class Search {
       stats_.comparisons += n.end[i] - n.begin[i];
       for (std::uint32_t k = n.begin[i]; k < n.end[i]; ++k) {
         const std::uint32_t v = n.votes[k];
-        const double dx = votes_.px[v] - cx;
-        const double dy = votes_.py[v] - cy;
-        const double dz = votes_.pz[v] - cz;
-        const double distance_squared = dx * dx + dy * dy + dz * dz;
-        if (distance_squared >= bin_size_squared_)
+        const double vote_distance_squared = squaredDistance(v, cx, cy, cz);
+        if (vote_distance_squared >= support_radius_squared_)
           continue;
         const double cos_half = std::abs(votes_.qw[v] * cw + votes_.qx[v] * cqx +
                                          votes_.qy[v] * cqy + votes_.qz[v] * cqz);
         if (cos_half <= cos_half_max_angle_)
           continue;
-        const double position = positionCompliance(distance_squared, bin_size_squared_);
+        const double object_distance_squared = objectDistanceSquared(v, c);
+        if (object_distance_squared >= support_radius_squared_)
+          continue;
+        const double position =
+            positionCompliance(std::max(vote_distance_squared, object_distance_squared),
+                               support_radius_squared_);
         const double orientation = orientationCompliance(cos_half, sin_half_squared_max_angle_);
         const double similarity = position * orientation * votes_.weight[v];
         // Near-equal votes go by key, not by where the bin layout put them.
@@ -264,11 +268,30 @@ class Search {
     return true;
   }
 
+  double squaredDistance(std::uint32_t v, double x, double y, double z) const {
+    const double dx = votes_.px[v] - x;
+    const double dy = votes_.py[v] - y;
+    const double dz = votes_.pz[v] - z;
+    return dx * dx + dy * dy + dz * dz;
+  }
+
+  // The support test at the object: hypothesis c carried through vote v's relative pose puts the
+  // member at c * inverse(relative pose); how far is that from where the member's input is? A
+  // small turn of the vote against the hypothesis moves this point by the turn times the
+  // relation's length, which the vote's own distance does not see.
+  double objectDistanceSquared(std::uint32_t v, std::uint32_t c) const {
+    const Eigen::Quaterniond hypothesis(votes_.qw[c], votes_.qx[c], votes_.qy[c], votes_.qz[c]);
+    const Eigen::Vector3d member =
+        Eigen::Vector3d(votes_.px[c], votes_.py[c], votes_.pz[c]) +
+        hypothesis * Eigen::Vector3d(votes_.mx[v], votes_.my[v], votes_.mz[v]);
+    return (member - Eigen::Vector3d(votes_.ox[v], votes_.oy[v], votes_.oz[v])).squaredNorm();
+  }
+
   const Votes& votes_;
   const std::vector<std::vector<int>>& atoms_of_input_;
   const std::size_t member_count_;
   IsmRecognitionStats& stats_;
-  const double bin_size_squared_;
+  const double support_radius_squared_;
   const double cos_half_max_angle_;
   const double sin_half_squared_max_angle_;
   std::vector<int> vote_;
@@ -291,16 +314,25 @@ struct AssignmentHash {
   }
 };
 
-// What the results found so far rule out: a result that uses only estimates a better result uses
-// too would be dropped as redundant, so a bin whose votes all come from such estimates need only
-// be searched for results that beat the better one.
+// What the results found so far rule out. At the root (every result is returned), a result that
+// uses only estimates a better result uses too is dropped as redundant, so a bin whose votes all
+// come from such estimates need only be searched for results that beat the better one. Below the
+// root (the n best are passed up), a result is dropped only if a better one has the same
+// assignment: one at another pose is another placeholder for the parent, even if it explains no
+// new estimate, and dropping it lets a badly seen object pull the hypothesis away from where the
+// parent needs it. There the bar is the n-th best objective of distinct assignments found so far.
 class Bar {
  public:
-  explicit Bar(const std::vector<std::vector<int>>& atoms_of_input)
-      : atoms_of_input_(atoms_of_input) {}
+  Bar(const std::vector<std::vector<int>>& atoms_of_input, const IsmResultSelection& selection)
+      : atoms_of_input_(atoms_of_input), best_count_(selection.best_count) {}
+
+  bool dropsSubsets() const { return best_count_ == 0; }
 
   // The objective a result of a bin with this neighbourhood must reach to be selected.
   double forBin(const Neighbourhood& n) const {
+    if (!dropsSubsets()) {
+      return best_.size() < best_count_ ? kNoThreshold : best_.back().first;
+    }
     double bar = kNoThreshold;
     for (const auto& [objective, atoms] : dominators_) {
       if (objective > bar &&
@@ -312,6 +344,10 @@ class Bar {
   }
 
   void add(const Hypothesis& result) {
+    if (!dropsSubsets()) {
+      addToBest(result);
+      return;
+    }
     std::vector<int> atoms = unionOfAtoms(result.assignment, atoms_of_input_);
     for (const auto& [objective, other] : dominators_) {
       if (objective >= result.objective &&
@@ -323,84 +359,106 @@ class Bar {
   }
 
  private:
+  // Keeps the best_count_ best objectives of distinct assignments, best first.
+  void addToBest(const Hypothesis& result) {
+    auto same = std::find_if(best_.begin(), best_.end(),
+                             [&](const auto& entry) { return entry.second == result.assignment; });
+    if (same != best_.end()) {
+      same->first = std::max(same->first, result.objective);
+    } else if (best_.size() < best_count_) {
+      best_.emplace_back(result.objective, result.assignment);
+    } else if (result.objective > best_.back().first) {
+      best_.back() = {result.objective, result.assignment};
+    }
+    std::sort(best_.begin(), best_.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
+  }
+
   const std::vector<std::vector<int>>& atoms_of_input_;
+  const std::size_t best_count_;
   std::vector<std::pair<double, std::vector<int>>> dominators_;
+  std::vector<std::pair<double, std::vector<int>>> best_;
 };
 
-}  // namespace
-
-std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
-                                    const IsmRecognitionParameters& parameters,
-                                    const IsmResultSelection& selection,
-                                    IsmRecognitionStats* stats) {
+void checkInputs(const Ism& ism, const std::vector<IsmInput>& inputs,
+                 const IsmRecognitionParameters& parameters) {
   if (!(parameters.bin_size > 0.0) || !(parameters.max_angle_deviation > 0.0)) {
     throw InputError("ISM '" + ism.name + "': bin size and maximum angle deviation must be > 0");
   }
-  const std::size_t member_count = ism.members.size();
-
-  // Cast the votes: every input combined with every relative pose of its member.
-  std::size_t vote_count = 0;
   for (const IsmInput& input : inputs) {
-    if (input.member < 0 || static_cast<std::size_t>(input.member) >= member_count) {
+    if (input.member < 0 || static_cast<std::size_t>(input.member) >= ism.members.size()) {
       throw InputError("ISM '" + ism.name + "': an input names member " +
-                       std::to_string(input.member) + " of " + std::to_string(member_count));
+                       std::to_string(input.member) + " of " +
+                       std::to_string(ism.members.size()));
     }
     if (!(input.weight > 0.0)) {
       throw InputError("ISM '" + ism.name + "': input weights must be > 0");
     }
-    vote_count += ism.members[input.member].relative_poses.size();
   }
+}
+
+void setVote(Votes& votes, std::size_t v, const IsmInput& input, const Pose& relative) {
+  const Eigen::Vector3d position = input.pose.position + input.pose.orientation * relative.position;
+  const Eigen::Quaterniond orientation = input.pose.orientation * relative.orientation;
+  // Where the member stands in the reference's frame: the position of inverse(relative).
+  const Eigen::Vector3d member = -(relative.orientation.conjugate() * relative.position);
+  votes.px[v] = position.x();
+  votes.py[v] = position.y();
+  votes.pz[v] = position.z();
+  votes.qw[v] = orientation.w();
+  votes.qx[v] = orientation.x();
+  votes.qy[v] = orientation.y();
+  votes.qz[v] = orientation.z();
+  votes.weight[v] = input.weight;
+  votes.ox[v] = input.pose.position.x();
+  votes.oy[v] = input.pose.position.y();
+  votes.oz[v] = input.pose.position.z();
+  votes.mx[v] = member.x();
+  votes.my[v] = member.y();
+  votes.mz[v] = member.z();
+}
+
+// Every input combined with every relative pose of its member.
+Votes castVotes(const Ism& ism, const std::vector<IsmInput>& inputs) {
+  std::size_t vote_count = 0;
+  for (const IsmInput& input : inputs)
+    vote_count += ism.members[input.member].relative_poses.size();
   Votes cast;
   cast.resize(vote_count);
   std::size_t v = 0;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    const IsmInput& input = inputs[i];
-    const auto& relative_poses = ism.members[input.member].relative_poses;
+    const auto& relative_poses = ism.members[inputs[i].member].relative_poses;
     for (std::size_t r = 0; r < relative_poses.size(); ++r, ++v) {
-      const Pose& relative = relative_poses[r].reference_in_member;
-      const Eigen::Vector3d position =
-          input.pose.position + input.pose.orientation * relative.position;
-      const Eigen::Quaterniond orientation = input.pose.orientation * relative.orientation;
-      cast.px[v] = position.x();
-      cast.py[v] = position.y();
-      cast.pz[v] = position.z();
-      cast.qw[v] = orientation.w();
-      cast.qx[v] = orientation.x();
-      cast.qy[v] = orientation.y();
-      cast.qz[v] = orientation.z();
-      cast.weight[v] = input.weight;
-      cast.member[v] = input.member;
+      setVote(cast, v, inputs[i], relative_poses[r].reference_in_member);
+      cast.member[v] = inputs[i].member;
       cast.input[v] = static_cast<int>(i);
       cast.relative[v] = static_cast<int>(r);
     }
   }
+  return cast;
+}
 
-  const VotingSpace space(parameters.bin_size, cast.px.data(), cast.py.data(), cast.pz.data(),
-                          vote_count);
+// The votes in the space's bin order.
+Votes sortedByBin(const Votes& cast, const VotingSpace& space) {
+  const std::size_t count = cast.member.size();
   Votes votes;
-  votes.resize(vote_count);
-  for (std::size_t sorted = 0; sorted < vote_count; ++sorted) {
-    const std::uint32_t from = space.order()[sorted];
-    votes.px[sorted] = cast.px[from];
-    votes.py[sorted] = cast.py[from];
-    votes.pz[sorted] = cast.pz[from];
-    votes.qw[sorted] = cast.qw[from];
-    votes.qx[sorted] = cast.qx[from];
-    votes.qy[sorted] = cast.qy[from];
-    votes.qz[sorted] = cast.qz[from];
-    votes.weight[sorted] = cast.weight[from];
-    votes.member[sorted] = cast.member[from];
-    votes.input[sorted] = cast.input[from];
-    votes.relative[sorted] = cast.relative[from];
-  }
+  votes.resize(count);
+  const auto copy = [&](auto member) {
+    for (std::size_t sorted = 0; sorted < count; ++sorted)
+      (votes.*member)[sorted] = (cast.*member)[space.order()[sorted]];
+  };
+  for (auto column : {&Votes::px, &Votes::py, &Votes::pz, &Votes::qw, &Votes::qx, &Votes::qy,
+                      &Votes::qz, &Votes::weight, &Votes::ox, &Votes::oy, &Votes::oz, &Votes::mx,
+                      &Votes::my, &Votes::mz})
+    copy(column);
+  for (auto column : {&Votes::member, &Votes::input, &Votes::relative})
+    copy(column);
+  return votes;
+}
 
-  IsmRecognitionStats local_stats;
-  local_stats.votes = vote_count;
-  local_stats.bins = space.bins().size();
-  const std::vector<std::vector<int>> atoms_of_input = atomsOfInputs(inputs);
-  Search search(ism, votes, atoms_of_input, parameters, local_stats);
-
-  // Search bins with the highest upper bound first: their results raise the bar for the rest.
+// Every hypothesis that may be selected, bins with the highest upper bound first: their results
+// raise the bar for the rest.
+std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar& bar) {
   const std::size_t bin_count = space.bins().size();
   std::vector<Neighbourhood> neighbourhoods(bin_count);
   for (std::size_t b = 0; b < bin_count; ++b)
@@ -410,27 +468,45 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
   std::stable_sort(bin_order.begin(), bin_order.end(), [&](std::size_t a, std::size_t b) {
     return neighbourhoods[a].upper_bound > neighbourhoods[b].upper_bound;
   });
-
-  Bar bar(atoms_of_input);
   std::vector<Hypothesis> found;
   for (std::size_t b : bin_order) {
     const Neighbourhood& n = neighbourhoods[b];
     search.searchBin(
-        n, [&] { return bar.forBin(n); },
+        n, bar.dropsSubsets(), [&] { return bar.forBin(n); },
         [&](Hypothesis&& hypothesis) {
           bar.add(hypothesis);
           found.push_back(std::move(hypothesis));
         });
   }
-  if (stats != nullptr) {
-    stats->votes += local_stats.votes;
-    stats->bins += local_stats.bins;
-    stats->candidates += local_stats.candidates;
-    stats->comparisons += local_stats.comparisons;
-  }
+  return found;
+}
 
-  // Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
-  // nor the bin grid decides between equally good results.
+IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, std::vector<int> atoms) {
+  const int c = hypothesis.candidate;
+  IsmResult result;
+  result.reference_pose =
+      Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
+           Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c]));
+  result.objective = hypothesis.objective;
+  // Inputs that stand for themselves (negative atoms) sort first; report real estimates only.
+  result.estimates.assign(std::lower_bound(atoms.begin(), atoms.end(), 0), atoms.end());
+  result.matches.resize(hypothesis.votes.size());
+  for (std::size_t m = 0; m < hypothesis.votes.size(); ++m) {
+    const int vote = hypothesis.votes[m];
+    if (vote >= 0) {
+      result.matches[m] = {votes.input[vote], votes.relative[vote],
+                           hypothesis.position_compliance[m], hypothesis.orientation_compliance[m]};
+    }
+  }
+  return result;
+}
+
+// Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
+// nor the bin grid decides between equally good results; then one result per assignment, and at
+// the root none whose estimates a better result uses too.
+std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes& votes,
+                                     const std::vector<std::vector<int>>& atoms_of_input,
+                                     const IsmResultSelection& selection) {
   std::sort(found.begin(), found.end(), [&](const Hypothesis& a, const Hypothesis& b) {
     const std::int64_t level_a = objectiveLevel(a.objective);
     const std::int64_t level_b = objectiveLevel(b.objective);
@@ -446,6 +522,7 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
       continue;
     std::vector<int> atoms = unionOfAtoms(hypothesis.assignment, atoms_of_input);
     const bool dominated =
+        selection.best_count == 0 &&
         std::any_of(kept_atoms.begin(), kept_atoms.end(), [&](const std::vector<int>& better) {
           return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
         });
@@ -453,26 +530,39 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
       continue;
     if (selection.best_count > 0 && results.size() >= selection.best_count)
       break;
-    kept_atoms.push_back(atoms);
-    const int c = hypothesis.candidate;
-    IsmResult result;
-    result.reference_pose =
-        Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
-             Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c]));
-    result.objective = hypothesis.objective;
-    // Inputs that stand for themselves (negative atoms) sort first; report real estimates only.
-    result.estimates.assign(std::lower_bound(atoms.begin(), atoms.end(), 0), atoms.end());
-    result.matches.resize(member_count);
-    for (std::size_t m = 0; m < member_count; ++m) {
-      const int vote = hypothesis.votes[m];
-      if (vote < 0)
-        continue;
-      result.matches[m] = {votes.input[vote], votes.relative[vote],
-                           hypothesis.position_compliance[m], hypothesis.orientation_compliance[m]};
-    }
-    results.push_back(std::move(result));
+    if (selection.best_count == 0)
+      kept_atoms.push_back(atoms);
+    results.push_back(resultOf(hypothesis, votes, std::move(atoms)));
   }
   return results;
+}
+
+}  // namespace
+
+std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
+                                    const IsmRecognitionParameters& parameters,
+                                    const IsmResultSelection& selection,
+                                    IsmRecognitionStats* stats) {
+  checkInputs(ism, inputs, parameters);
+  const Votes cast = castVotes(ism, inputs);
+  const VotingSpace space(parameters.bin_size, cast.px.data(), cast.py.data(), cast.pz.data(),
+                          cast.px.size());
+  const Votes votes = sortedByBin(cast, space);
+
+  IsmRecognitionStats local_stats;
+  local_stats.votes = votes.px.size();
+  local_stats.bins = space.bins().size();
+  const std::vector<std::vector<int>> atoms_of_input = atomsOfInputs(inputs);
+  Search search(ism, votes, atoms_of_input, parameters, local_stats);
+  Bar bar(atoms_of_input, selection);
+  std::vector<Hypothesis> found = searchBins(space, search, bar);
+  if (stats != nullptr) {
+    stats->votes += local_stats.votes;
+    stats->bins += local_stats.bins;
+    stats->candidates += local_stats.candidates;
+    stats->comparisons += local_stats.comparisons;
+  }
+  return selectResults(found, votes, atoms_of_input, selection);
 }
 
 }  // namespace asr_ism

@@ -8,11 +8,16 @@
 namespace asr_ism {
 
 struct IsmRecognitionParameters {
-  /// Edge of the accumulator's cubic bins in metres, and the position deviation at which a
-  /// vote's position compliance reaches 0.
+  /// Edge of the accumulator's cubic bins in metres.
   double bin_size = 0.1;
   /// Orientation deviation in radians at which a vote's orientation compliance reaches 0.
   double max_angle_deviation = 0.5235987755982988;  // 30 degrees
+
+  /// The position deviation at which position compliance reaches 0: half the diagonal of a bin,
+  /// sqrt(3)/2 x bin_size (0.087 m for bins of 0.1 m), the farthest a point of a bin is from its
+  /// centre. It bounds both the vote's distance from the hypothesis and the member's distance
+  /// from where the hypothesis puts it.
+  double supportRadius() const { return 0.8660254037844386 * bin_size; }
 };
 
 /// An estimate given to one ISM: a real object or a child ISM's result, already assigned to the
