@@ -187,7 +187,7 @@ class Search {
   // exist then does not depend on how the bin grid groups the votes, so the answer is that of an
   // exhaustive search over all votes (a rigid motion of the input cannot change it).
   template <typename BarNow, typename Emit>
-  void searchBin(const Neighbourhood& n, bool drops_subsets, BarNow bar_now, Emit emit) {
+  void searchBin(const Neighbourhood& n, BarNow bar_now, Emit emit) {
     double threshold = bar_now();
     for (std::uint32_t c : n.candidates) {
       if (n.upper_bound < threshold - kBoundMargin)
@@ -209,8 +209,9 @@ class Search {
       }
       emit(std::move(hypothesis));
       // Later candidates come later in key order, and none can score more, so with one input per
-      // member they could only give a result this one makes redundant.
-      if (drops_subsets && n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
+      // member they could only give a result with this one's inputs or fewer. This one matches
+      // every input here perfectly: its pose serves a parent as well as theirs would.
+      if (n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
           std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; }))
         return;
       threshold = bar_now();
@@ -241,9 +242,8 @@ class Search {
         const double object_distance_squared = objectDistanceSquared(v, c);
         if (object_distance_squared >= support_radius_squared_)
           continue;
-        const double position =
-            positionCompliance(std::max(vote_distance_squared, object_distance_squared),
-                               support_radius_squared_);
+        const double position = positionCompliance(
+            std::max(vote_distance_squared, object_distance_squared), support_radius_squared_);
         const double orientation = orientationCompliance(cos_half, sin_half_squared_max_angle_);
         const double similarity = position * orientation * votes_.weight[v];
         // Near-equal votes go by key, not by where the bin layout put them.
@@ -388,8 +388,7 @@ void checkInputs(const Ism& ism, const std::vector<IsmInput>& inputs,
   for (const IsmInput& input : inputs) {
     if (input.member < 0 || static_cast<std::size_t>(input.member) >= ism.members.size()) {
       throw InputError("ISM '" + ism.name + "': an input names member " +
-                       std::to_string(input.member) + " of " +
-                       std::to_string(ism.members.size()));
+                       std::to_string(input.member) + " of " + std::to_string(ism.members.size()));
     }
     if (!(input.weight > 0.0)) {
       throw InputError("ISM '" + ism.name + "': input weights must be > 0");
@@ -447,9 +446,9 @@ Votes sortedByBin(const Votes& cast, const VotingSpace& space) {
     for (std::size_t sorted = 0; sorted < count; ++sorted)
       (votes.*member)[sorted] = (cast.*member)[space.order()[sorted]];
   };
-  for (auto column : {&Votes::px, &Votes::py, &Votes::pz, &Votes::qw, &Votes::qx, &Votes::qy,
-                      &Votes::qz, &Votes::weight, &Votes::ox, &Votes::oy, &Votes::oz, &Votes::mx,
-                      &Votes::my, &Votes::mz})
+  for (auto column :
+       {&Votes::px, &Votes::py, &Votes::pz, &Votes::qw, &Votes::qx, &Votes::qy, &Votes::qz,
+        &Votes::weight, &Votes::ox, &Votes::oy, &Votes::oz, &Votes::mx, &Votes::my, &Votes::mz})
     copy(column);
   for (auto column : {&Votes::member, &Votes::input, &Votes::relative})
     copy(column);
@@ -472,7 +471,7 @@ std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar
   for (std::size_t b : bin_order) {
     const Neighbourhood& n = neighbourhoods[b];
     search.searchBin(
-        n, bar.dropsSubsets(), [&] { return bar.forBin(n); },
+        n, [&] { return bar.forBin(n); },
         [&](Hypothesis&& hypothesis) {
           bar.add(hypothesis);
           found.push_back(std::move(hypothesis));

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <map>
 #include <memory>
 #include <random>
@@ -26,6 +27,9 @@ using asr_ism::Pose;
 using asr_ism::testing::recording;
 
 constexpr double kDegree = M_PI / 180.0;
+// How much lower than without it a badly seen object may leave the best instance of a tree with
+// sub-ISMs (the largest shortfall measured over these cases is printed).
+constexpr double kTreeTolerance = 0.05;
 
 struct SceneFile {
   const char* file;
@@ -52,7 +56,9 @@ const SceneFile kScenes[] = {
     {"office2016.sqlite", "office2016", ""},
 };
 
-void PrintTo(const SceneFile& scene, std::ostream* out) { *out << scene.scene; }
+void PrintTo(const SceneFile& scene, std::ostream* out) {
+  *out << scene.scene;
+}
 
 struct Learned {
   asr_ism::Demonstration demonstration;
@@ -70,14 +76,12 @@ const Learned& learned(const SceneFile& scene) {
     entry->trees.emplace_back(
         "star", generateIsmTree(entry->demonstration, RelationTopology::star(objects, center), {}));
     entry->trees.emplace_back(
-        "complete",
-        generateIsmTree(entry->demonstration, RelationTopology::complete(objects), {}));
+        "complete", generateIsmTree(entry->demonstration, RelationTopology::complete(objects), {}));
     if (std::string(scene.optimised).size() > 0) {
       const asr_ism::testing::TempDir folder("recognition_properties");
       const std::string path = folder.write("optimised.txt", scene.optimised);
       entry->trees.emplace_back(
-          "optimised",
-          generateIsmTree(entry->demonstration, readTopologyFile(path, objects), {}));
+          "optimised", generateIsmTree(entry->demonstration, readTopologyFile(path, objects), {}));
     }
   }
   return *entry;
@@ -95,10 +99,9 @@ Pose perturbed(const Pose& pose, std::mt19937& random, double scale) {
       Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
   Pose result = pose;
   if (std::uniform_int_distribution<int>(0, 1)(random) == 0) {
-    result.orientation =
-        (pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(scale * 60.0 * kDegree,
-                                                                 direction)))
-            .normalized();
+    result.orientation = (pose.orientation *
+                          Eigen::Quaterniond(Eigen::AngleAxisd(scale * 60.0 * kDegree, direction)))
+                             .normalized();
   } else {
     result.position += scale * 0.2 * direction;
   }
@@ -110,9 +113,14 @@ Pose perturbed(const Pose& pose, std::mt19937& random, double scale) {
 TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
   const Learned& scene = learned(GetParam());
   std::mt19937 random(12);
+  double worst = 0.0;
   for (const auto& [topology, tree] : scene.trees) {
     const TreeRecognizer recognizer(tree);
-    for (int trial = 0; trial < 12; ++trial) {
+    // A single ISM searches every hypothesis: exact. A tree passes a few results of each sub-ISM
+    // up; where one assignment of inputs is found at several poses, only the best goes up, and
+    // the parent may have preferred another (docs/recognition.md).
+    const double tolerance = tree.isms.size() == 1 ? 1e-9 : kTreeTolerance;
+    for (int trial = 0; trial < 40; ++trial) {
       const std::size_t step = std::uniform_int_distribution<std::size_t>(
           0, scene.demonstration.stepCount() - 1)(random);
       const Configuration recorded = scene.demonstration.configuration(step);
@@ -125,9 +133,38 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
       changed[object].pose = perturbed(recorded[object].pose, random, scale);
       const double without = bestConfidence(recognizer.recognize(removed));
       const double with = bestConfidence(recognizer.recognize(changed));
-      EXPECT_GE(with, without - 1e-9)
+      worst = std::max(worst, without - with);
+      EXPECT_GE(with, without - tolerance)
           << topology << " tree, set " << step << ", " << recorded[object].key.toString()
           << " perturbed at scale " << scale;
+    }
+  }
+  std::cout << GetParam().scene << ": largest shortfall " << worst << "\n";
+}
+
+// The example: in office2016 (complete tree), a marker turned about 30 deg scored 0.57
+// where the configuration without it scored 0.71, and turned by 60 deg 0.71 again. Every
+// recorded set, every object turned about its own z axis by 30 and 60 deg.
+TEST(Office2016, TurnedObjectNeverScoresLowerThanMissingObject) {
+  REQUIRE_RECORDINGS();
+  const Learned& scene = learned(kScenes[10]);
+  for (const auto& [topology, tree] : scene.trees) {
+    const TreeRecognizer recognizer(tree);
+    for (std::size_t step = 0; step < scene.demonstration.stepCount(); ++step) {
+      const Configuration recorded = scene.demonstration.configuration(step);
+      for (std::size_t object = 0; object < recorded.size(); ++object) {
+        Configuration removed = recorded;
+        removed.erase(removed.begin() + object);
+        const double without = bestConfidence(recognizer.recognize(removed));
+        for (double degrees : {30.0, 60.0}) {
+          Configuration turned = recorded;
+          turned[object].pose.orientation *=
+              Eigen::Quaterniond(Eigen::AngleAxisd(degrees * kDegree, Eigen::Vector3d::UnitZ()));
+          EXPECT_GE(bestConfidence(recognizer.recognize(turned)), without - 1e-9)
+              << topology << " tree, set " << step << ", " << recorded[object].key.toString()
+              << " turned by " << degrees << " deg";
+        }
+      }
     }
   }
 }
