@@ -57,7 +57,8 @@ visualization_msgs::MarkerArray sceneInstanceMarkers(const std::vector<SceneInst
     text.scale.z = 0.06;
     text.color = rgbaColor(1, 1, 1);
     char label[128];
-    std::snprintf(label, sizeof label, "%s %.2f", instance.scene.c_str(), instance.confidence);
+    std::snprintf(label, sizeof label, "%s %.2f (objects %.2f)", instance.scene.c_str(),
+                  instance.confidence, instance.object_confidence);
     text.text = label;
     markers.markers.push_back(text);
 
