@@ -6,6 +6,7 @@
 #include "asr_ism/input_error.hpp"
 #include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/cli/recordings_folder.hpp"
+#include "clutter_benchmark.hpp"
 #include "recognition_benchmark.hpp"
 #include "report.hpp"
 #include "synthetic_benchmark.hpp"
@@ -28,7 +29,7 @@ void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json) 
 
 int runRecognitionCommand(const std::vector<std::string>& arguments) {
   const CommandLine options(arguments, {"recordings", "threads", "synthetic-json"},
-                            {"json", "no-synthetic"});
+                            {"json", "no-synthetic", "no-clutter", "clutter-only"});
   BenchmarkSettings settings;
   settings.threads = static_cast<unsigned>(options.integer("threads", 1));
   if (settings.threads == 0)
@@ -36,14 +37,20 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   const bool json = options.flag("json");
   const std::string synthetic_json = options.optional("synthetic-json", "");
   // In JSON mode stdout carries only the scene array, so the synthetic rows need a file.
-  const bool run_synthetic = !options.flag("no-synthetic") && (!json || !synthetic_json.empty());
+  const bool run_synthetic = !options.flag("no-synthetic") && !options.flag("clutter-only") &&
+                             (!json || !synthetic_json.empty());
   std::ostream& progress = std::cerr;
 
+  const bool clutter_only = options.flag("clutter-only");
   std::vector<SceneRow> scene_rows;
+  std::vector<ClutterRow> clutter_rows;
   if (const auto recordings =
           cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress)) {
     progress << "kitchen scenes from " << *recordings << "\n";
-    scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
+    if (!clutter_only)
+      scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
+    if (!options.flag("no-clutter"))
+      clutter_rows = benchmarkClutter(*recordings, settings, progress);
   }
 
   std::vector<SyntheticRow> synthetic_rows;
@@ -59,7 +66,7 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
                 "to run it)\n";
   }
 
-  const std::vector<TargetCheck> checks = checkTargets(scene_rows, synthetic_rows);
+  const std::vector<TargetCheck> checks = checkTargets(scene_rows, synthetic_rows, clutter_rows);
   if (json) {
     std::cout << sceneRowsToJson(scene_rows).dump(2) << "\n";
     printTargets(progress, checks);
@@ -71,6 +78,10 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
     std::cout << "\n";
   } else {
     std::cout << "Kitchen scenes: skipped, recordings folder not found\n\n";
+  }
+  if (!clutter_rows.empty()) {
+    printClutterTable(std::cout, clutter_rows);
+    std::cout << "\n";
   }
   if (!synthetic_rows.empty()) {
     printSyntheticTable(std::cout, synthetic_rows, settings);

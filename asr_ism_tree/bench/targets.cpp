@@ -41,11 +41,26 @@ std::string where(const SceneRow& row) {
   return " (" + row.scene + ", " + row.topology + ")";
 }
 
+// Clutter (issue 12): 1,000 estimates of the scene's types within 100 ms, 10,000 within 1 s.
+void checkClutter(const std::vector<ClutterRow>& clutter, std::vector<TargetCheck>& checks) {
+  for (const ClutterRow& row : clutter) {
+    const double limit = row.estimates == 1000 ? 100.0 : row.estimates == 10000 ? 1000.0 : 0.0;
+    if (limit == 0.0)
+      continue;
+    checks.push_back({"clutter " + row.topology + " " + std::to_string(row.estimates) +
+                          " estimates <= " + milliseconds(limit),
+                      row.run ? milliseconds(row.milliseconds) : "not run (too slow)",
+                      row.run && row.milliseconds <= limit});
+  }
+}
+
 }  // namespace
 
 std::vector<TargetCheck> checkTargets(const std::vector<SceneRow>& scenes,
-                                      const std::vector<SyntheticRow>& synthetic) {
+                                      const std::vector<SyntheticRow>& synthetic,
+                                      const std::vector<ClutterRow>& clutter) {
   std::vector<TargetCheck> checks;
+  checkClutter(clutter, checks);
   for (const SceneRow& row : scenes) {
     if (row.topology != "complete")
       continue;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "clutter_benchmark.hpp"
 #include "recognition_benchmark.hpp"
 #include "synthetic_benchmark.hpp"
 
@@ -19,7 +20,8 @@ struct TargetCheck {
 /// The suite's targets for the rows at hand; targets whose rows were not measured (scenes
 /// skipped, --no-synthetic) are left out.
 std::vector<TargetCheck> checkTargets(const std::vector<SceneRow>& scenes,
-                                      const std::vector<SyntheticRow>& synthetic);
+                                      const std::vector<SyntheticRow>& synthetic,
+                                      const std::vector<ClutterRow>& clutter = {});
 
 void printTargets(std::ostream& out, const std::vector<TargetCheck>& checks);
 
