@@ -41,11 +41,10 @@ asr_ism::Configuration clutteredCopies(const asr_ism::Configuration& recorded,
       const Eigen::Vector3d shift(random.gaussian(), random.gaussian(), random.gaussian());
       const Eigen::Vector3d axis(random.gaussian(), random.gaussian(), random.gaussian());
       estimate.pose.position += 0.02 * shift;
-      estimate.pose.orientation =
-          (estimate.pose.orientation *
-           Eigen::Quaterniond(Eigen::AngleAxisd(3.0 * M_PI / 180.0 * random.gaussian(),
-                                                axis.normalized())))
-              .normalized();
+      estimate.pose.orientation = (estimate.pose.orientation *
+                                   Eigen::Quaterniond(Eigen::AngleAxisd(
+                                       3.0 * M_PI / 180.0 * random.gaussian(), axis.normalized())))
+                                      .normalized();
     }
     configuration.push_back(estimate);
   }
@@ -59,9 +58,9 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
       asr_ism::sqlite::readDemonstration(recordings + "/story_1.sqlite", "gedeck");
   const auto& objects = demonstration.objects();
   const std::pair<std::string, IsmTree> trees[] = {
-      {"star", generateIsmTree(demonstration,
-                               RelationTopology::star(objects, chooseStarCenter(demonstration)),
-                               {})},
+      {"star",
+       generateIsmTree(demonstration,
+                       RelationTopology::star(objects, chooseStarCenter(demonstration)), {})},
       {"complete", generateIsmTree(demonstration, RelationTopology::complete(objects), {})}};
   const asr_ism::Configuration recorded = demonstration.configuration(kRecordedSet);
   std::vector<ClutterRow> rows;
@@ -80,7 +79,8 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
         std::vector<SceneInstance> instances;
         row.milliseconds = millisecondsOf(recognizer, input, instances);
         for (int again = 1; again < 3 && row.milliseconds < 2000.0; ++again)
-          row.milliseconds = std::min(row.milliseconds, millisecondsOf(recognizer, input, instances));
+          row.milliseconds =
+              std::min(row.milliseconds, millisecondsOf(recognizer, input, instances));
         row.run = true;
         row.instances = instances.size();
         row.best_confidence = instances.empty() ? 0.0 : instances.front().confidence;

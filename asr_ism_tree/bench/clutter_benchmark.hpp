@@ -26,8 +26,7 @@ std::vector<std::size_t> clutterSizes();
 /// The clutter series for gedeck's star and complete trees. A topology's series stops once one
 /// size took longer than 30 s.
 std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
-                                         const BenchmarkSettings& settings,
-                                         std::ostream& progress);
+                                         const BenchmarkSettings& settings, std::ostream& progress);
 
 /// The series as a table.
 void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows);

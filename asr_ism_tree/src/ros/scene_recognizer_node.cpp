@@ -31,7 +31,12 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
   estimate_timeout_ = optionalParameter<double>(private_node_, "estimate_timeout", 5.0);
   checkParameter(private_node_, "estimate_timeout", estimate_timeout_ >= 0.0,
                  ">= 0 s (0: estimates never expire)");
-  models_ = SceneModels::load(model_files_, scenes_);
+  const int max_estimates = optionalParameter<int>(private_node_, "max_estimates", 1000);
+  checkParameter(private_node_, "max_estimates", max_estimates >= 1,
+                 ">= 1 (requests with more estimates are refused)");
+  recognition_parameters_.max_estimates = static_cast<std::size_t>(max_estimates);
+  models_ = std::make_shared<const SceneModels>(
+      SceneModels::load(model_files_, scenes_, recognition_parameters_));
 
   instances_publisher_ = node_.advertise<asr_msgs::SceneInstanceList>("scene_instances", 10);
   markers_publisher_ = node_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, true);
@@ -45,27 +50,31 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
     timer_ = node_.createTimer(ros::Duration(1.0 / rate), &SceneRecognizerNode::tick, this);
   }
   std::string loaded;
-  for (const std::string& scene : models_.scenes())
+  for (const std::string& scene : models_->scenes())
     loaded += (loaded.empty() ? "" : ", ") + scene;
-  ROS_INFO("scene_recognizer: %zu scenes loaded (%s), %s", models_.scenes().size(), loaded.c_str(),
+  ROS_INFO("scene_recognizer: %zu scenes loaded (%s), %s", models_->scenes().size(), loaded.c_str(),
            continuous ? "continuous mode" : "service only");
 }
 
 bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,
                                     asr_msgs::RecognizeScenes::Response& response) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::size_t rejected_before = intake_.rejectedCount();
   asr_ism::Configuration configuration;
-  for (const asr_msgs::ObjectEstimate& estimate : request.objects) {
-    if (auto accepted = intake_.accept(estimate))
-      configuration.push_back(*accepted);
+  std::shared_ptr<const SceneModels> models;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    models = models_;
+    const std::size_t rejected_before = intake_.rejectedCount();
+    for (const asr_msgs::ObjectEstimate& estimate : request.objects) {
+      if (auto accepted = intake_.accept(estimate))
+        configuration.push_back(*accepted);
+    }
+    response.rejected_estimates =
+        static_cast<std::uint32_t>(intake_.rejectedCount() - rejected_before);
+    if (response.rejected_estimates > 0)
+      publishRejected();
   }
-  response.rejected_estimates =
-      static_cast<std::uint32_t>(intake_.rejectedCount() - rejected_before);
-  if (response.rejected_estimates > 0)
-    publishRejected();
   try {
-    const std::vector<SceneInstance> instances = models_.recognize(configuration, request.scenes);
+    const std::vector<SceneInstance> instances = models->recognize(configuration, request.scenes);
     std_msgs::Header header;
     header.stamp = ros::Time::now();
     header.frame_id = intake_.fixedFrame();
@@ -85,7 +94,8 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
   const std::vector<std::string> files =
       request.model_files.empty() ? model_files_ : request.model_files;
   try {
-    SceneModels loaded = SceneModels::load(files, scenes_);
+    auto loaded = std::make_shared<const SceneModels>(
+        SceneModels::load(files, scenes_, recognition_parameters_));
     std::lock_guard<std::mutex> lock(mutex_);
     models_ = std::move(loaded);
     model_files_ = files;
@@ -96,7 +106,7 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
     ROS_WARN("scene_recognizer: reload failed: %s", response.message.c_str());
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  response.scenes = models_.scenes();
+  response.scenes = models_->scenes();
   return true;
 }
 
@@ -114,20 +124,29 @@ void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
 }
 
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const asr_ism::Configuration configuration =
-      latest_.current(ros::Time::now().toSec(), estimate_timeout_);
+  asr_ism::Configuration configuration;
+  std::shared_ptr<const SceneModels> models;
   asr_msgs::SceneInstanceList list;
-  list.header.stamp = newest_stamp_;
-  list.header.frame_id = intake_.fixedFrame();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    configuration = latest_.current(ros::Time::now().toSec(), estimate_timeout_);
+    models = models_;
+    list.header.stamp = newest_stamp_;
+    list.header.frame_id = intake_.fixedFrame();
+  }
   std::vector<SceneInstance> instances;
-  if (!configuration.empty())
-    instances = models_.recognize(configuration);
+  try {
+    if (!configuration.empty())
+      instances = models->recognize(configuration);
+  } catch (const asr_ism::InputError& error) {
+    // Too many estimates (max_estimates): publish no instance rather than stop the node.
+    ROS_WARN_THROTTLE(5.0, "scene_recognizer: %s", error.what());
+  }
   for (const SceneInstance& instance : instances)
     list.instances.push_back(toSceneInstanceMessage(instance, list.header));
   instances_publisher_.publish(list);
   if (markers_publisher_.getNumSubscribers() > 0)
-    markers_publisher_.publish(sceneInstanceMarkers(instances, models_, list.header));
+    markers_publisher_.publish(sceneInstanceMarkers(instances, *models, list.header));
 }
 
 void SceneRecognizerNode::publishRejected() {
