@@ -285,9 +285,11 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_ism::Configuratio
     for (std::size_t r = 0; r < evaluated[0].results.size(); ++r) {
       SceneInstance instance = assembleInstance(evaluated, r, poses, estimates_of_object);
       instance.ids_ignored = matching.ids_ignored;
-      const bool known = std::any_of(instances.begin(), instances.end(), [&](const auto& other) {
-        return sameInstance(other, instance);
-      });
+      // One labelling cannot repeat an instance; only across labellings can one reappear.
+      const bool known =
+          labelling > 0 && std::any_of(instances.begin(), instances.end(), [&](const auto& other) {
+            return sameInstance(other, instance);
+          });
       if (!known)
         instances.push_back(std::move(instance));
     }
