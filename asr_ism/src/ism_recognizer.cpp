@@ -58,6 +58,8 @@ struct Hypothesis {
   std::vector<double> position_compliance;
   std::vector<double> orientation_compliance;
   std::vector<int> assignment;  // per member, the matched input or -1
+  // Matches every input around it fully, one per member: nothing else can explain them better.
+  bool perfect = false;
 };
 
 // The neighbourhood of one bin, regrouped by member so a hypothesis can be abandoned as soon as
@@ -207,12 +209,15 @@ class Search {
         if (vote_[m] >= 0)
           hypothesis.assignment[m] = votes_.input[vote_[m]];
       }
-      emit(std::move(hypothesis));
       // Later candidates come later in key order, and none can score more, so with one input per
       // member they could only give a result with this one's inputs or fewer. This one matches
       // every input here perfectly: its pose serves a parent as well as theirs would.
-      if (n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
-          std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; }))
+      hypothesis.perfect =
+          n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
+          std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; });
+      const bool perfect = hypothesis.perfect;
+      emit(std::move(hypothesis));
+      if (perfect)
         return;
       threshold = bar_now();
     }
@@ -320,7 +325,9 @@ struct AssignmentHash {
 // root (the n best are passed up), a result is dropped only if a better one has the same
 // assignment: one at another pose is another placeholder for the parent, even if it explains no
 // new estimate, and dropping it lets a badly seen object pull the hypothesis away from where the
-// parent needs it. There the bar is the n-th best objective of distinct assignments found so far.
+// parent needs it. There the bar is the n-th best objective of distinct assignments found so far,
+// and a perfect result (every input around it matched fully) rules out others that use only its
+// estimates, as at the root: they could only offer a parent a pose that fits those inputs worse.
 class Bar {
  public:
   Bar(const std::vector<std::vector<int>>& atoms_of_input, const IsmResultSelection& selection)
@@ -330,10 +337,16 @@ class Bar {
 
   // The objective a result of a bin with this neighbourhood must reach to be selected.
   double forBin(const Neighbourhood& n) const {
-    if (!dropsSubsets()) {
-      return best_.size() < best_count_ ? kNoThreshold : best_.back().first;
-    }
     double bar = kNoThreshold;
+    if (!dropsSubsets()) {
+      // Only results better than anything this bin (and every later one: bins come by falling
+      // bound) can give are sure to stay; a perfect result found later could drop the others.
+      std::size_t sure = 0;
+      for (const auto& entry : best_)
+        sure += entry.objective > n.upper_bound + kBoundMargin ? 1 : 0;
+      if (sure >= best_count_)
+        return best_[best_count_ - 1].objective;
+    }
     for (const auto& [objective, atoms] : dominators_) {
       if (objective > bar &&
           std::includes(atoms.begin(), atoms.end(), n.atoms.begin(), n.atoms.end())) {
@@ -344,40 +357,60 @@ class Bar {
   }
 
   void add(const Hypothesis& result) {
-    if (!dropsSubsets()) {
-      addToBest(result);
-      return;
-    }
     std::vector<int> atoms = unionOfAtoms(result.assignment, atoms_of_input_);
-    for (const auto& [objective, other] : dominators_) {
-      if (objective >= result.objective &&
-          std::includes(other.begin(), other.end(), atoms.begin(), atoms.end())) {
-        return;  // the better result rules out everything this one would
-      }
+    if (dominated(result.objective, atoms))
+      return;  // a better result rules out everything this one would
+    if (!dropsSubsets()) {
+      addToBest(result, atoms);
+      if (!result.perfect)
+        return;
+      best_.erase(std::remove_if(best_.begin(), best_.end(),
+                                 [&](const BestEntry& entry) {
+                                   return entry.objective <= result.objective &&
+                                          entry.assignment != result.assignment &&
+                                          std::includes(atoms.begin(), atoms.end(),
+                                                        entry.atoms.begin(), entry.atoms.end());
+                                 }),
+                  best_.end());
     }
     dominators_.emplace_back(result.objective, std::move(atoms));
   }
 
  private:
+  struct BestEntry {
+    double objective;
+    std::vector<int> assignment;
+    std::vector<int> atoms;
+  };
+
+  bool dominated(double objective, const std::vector<int>& atoms) const {
+    return std::any_of(dominators_.begin(), dominators_.end(), [&](const auto& dominator) {
+      return dominator.first >= objective &&
+             std::includes(dominator.second.begin(), dominator.second.end(), atoms.begin(),
+                           atoms.end());
+    });
+  }
+
   // Keeps the best_count_ best objectives of distinct assignments, best first.
-  void addToBest(const Hypothesis& result) {
-    auto same = std::find_if(best_.begin(), best_.end(),
-                             [&](const auto& entry) { return entry.second == result.assignment; });
+  void addToBest(const Hypothesis& result, const std::vector<int>& atoms) {
+    auto same = std::find_if(best_.begin(), best_.end(), [&](const BestEntry& entry) {
+      return entry.assignment == result.assignment;
+    });
     if (same != best_.end()) {
-      same->first = std::max(same->first, result.objective);
+      same->objective = std::max(same->objective, result.objective);
     } else if (best_.size() < best_count_) {
-      best_.emplace_back(result.objective, result.assignment);
-    } else if (result.objective > best_.back().first) {
-      best_.back() = {result.objective, result.assignment};
+      best_.push_back({result.objective, result.assignment, atoms});
+    } else if (result.objective > best_.back().objective) {
+      best_.back() = {result.objective, result.assignment, atoms};
     }
     std::sort(best_.begin(), best_.end(),
-              [](const auto& a, const auto& b) { return a.first > b.first; });
+              [](const BestEntry& a, const BestEntry& b) { return a.objective > b.objective; });
   }
 
   const std::vector<std::vector<int>>& atoms_of_input_;
   const std::size_t best_count_;
   std::vector<std::pair<double, std::vector<int>>> dominators_;
-  std::vector<std::pair<double, std::vector<int>>> best_;
+  std::vector<BestEntry> best_;
 };
 
 void checkInputs(const Ism& ism, const std::vector<IsmInput>& inputs,
@@ -501,8 +534,9 @@ IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, std::vector
 }
 
 // Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
-// nor the bin grid decides between equally good results; then one result per assignment, and at
-// the root none whose estimates a better result uses too.
+// nor the bin grid decides between equally good results; then one result per assignment, and none
+// whose estimates a better result uses too: at the root any better result, below it a perfect
+// one (see Bar).
 std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes& votes,
                                      const std::vector<std::vector<int>>& atoms_of_input,
                                      const IsmResultSelection& selection) {
@@ -521,7 +555,6 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
       continue;
     std::vector<int> atoms = unionOfAtoms(hypothesis.assignment, atoms_of_input);
     const bool dominated =
-        selection.best_count == 0 &&
         std::any_of(kept_atoms.begin(), kept_atoms.end(), [&](const std::vector<int>& better) {
           return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
         });
@@ -529,7 +562,7 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
       continue;
     if (selection.best_count > 0 && results.size() >= selection.best_count)
       break;
-    if (selection.best_count == 0)
+    if (selection.best_count == 0 || hypothesis.perfect)
       kept_atoms.push_back(atoms);
     results.push_back(resultOf(hypothesis, votes, std::move(atoms)));
   }
