@@ -10,7 +10,7 @@
 #include <limits>
 #include <sstream>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism {
 namespace {

@@ -18,11 +18,11 @@
 #include <string>
 #include <vector>
 
-#include "asr_ism/recordings.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/cli/timing.hpp"
+#include "asr_common/recordings.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
-#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/scene_models.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
@@ -59,13 +59,13 @@ class Node {
   pid_t pid_ = -1;
 };
 
-std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_ism::Configuration& configuration) {
+std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_common::Configuration& configuration) {
   std_msgs::Header header;
   header.frame_id = "map";
   header.stamp = ros::Time::now();
   std::vector<asr_msgs::ObjectEstimate> messages;
-  for (const asr_ism::ObjectEstimate& estimate : configuration)
-    messages.push_back(asr_ism::ros_interface::toEstimateMessage(estimate, header));
+  for (const asr_common::ObjectEstimate& estimate : configuration)
+    messages.push_back(asr_common::ros_interface::toEstimateMessage(estimate, header));
   return messages;
 }
 
@@ -73,7 +73,7 @@ std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_ism::Configuration& c
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "asr_node_bench", ros::init_options::AnonymousName);
-  const std::string recordings = asr_ism::recordingsDirectory(ASR_RECORDINGS_DIR);
+  const std::string recordings = asr_common::recordingsDirectory(ASR_RECORDINGS_DIR);
   if (recordings.empty()) {
     std::fprintf(
         stderr,
@@ -106,17 +106,18 @@ int main(int argc, char** argv) {
     ros::ServiceClient client =
         handle.serviceClient<asr_msgs::RecognizeScenes>("recognize_scenes", true);
     for (std::size_t set = 0; set < gedeck.stepCount(); ++set) {
-      const asr_ism::Configuration configuration = gedeck.configuration(set);
+      const asr_common::Configuration configuration = gedeck.configuration(set);
       double best_library = 1e9;
       double best_node = 1e9;
       for (int repetition = 0; repetition < kRepetitions; ++repetition) {
-        best_library = std::min(best_library,
-                                cli::millisecondsOf([&] { recognizer.recognize(configuration); }));
+        best_library =
+            std::min(best_library,
+                     asr_common::cli::millisecondsOf([&] { recognizer.recognize(configuration); }));
         asr_msgs::RecognizeScenes service;
         service.request.objects = messagesOf(configuration);
         bool answered = false;
-        best_node =
-            std::min(best_node, cli::millisecondsOf([&] { answered = client.call(service); }));
+        best_node = std::min(
+            best_node, asr_common::cli::millisecondsOf([&] { answered = client.call(service); }));
         if (!answered || service.response.instances.empty()) {
           std::fprintf(stderr, "asr_node_bench: the service call for set %zu failed\n", set);
           return 1;
@@ -126,12 +127,12 @@ int main(int argc, char** argv) {
       node_ms.push_back(best_node);
     }
   }
-  const double library_median = cli::median(library_ms);
-  const double node_median = cli::median(node_ms);
+  const double library_median = asr_common::cli::median(library_ms);
+  const double node_median = asr_common::cli::median(node_ms);
 
   // (2) Publishing rate with the ten kitchen scenes, complete topologies.
   std::vector<std::string> model_files;
-  for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+  for (const asr_common::cli::KitchenScene& kitchen : asr_common::cli::kitchenScenes()) {
     const asr_ism::Demonstration demonstration =
         asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene);
     const std::string model = (work / (std::string(kitchen.scene) + ".sqlite")).string();
@@ -145,13 +146,13 @@ int main(int argc, char** argv) {
   double tick_ms = 0.0;
   {
     const SceneModels models = SceneModels::load(model_files);
-    asr_ism::Configuration everything;
-    for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+    asr_common::Configuration everything;
+    for (const asr_common::cli::KitchenScene& kitchen : asr_common::cli::kitchenScenes()) {
       const auto configuration =
           asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene)
               .configuration(0);
       // One estimate per object, as the node keeps: scenes share objects.
-      for (const asr_ism::ObjectEstimate& estimate : configuration) {
+      for (const asr_common::ObjectEstimate& estimate : configuration) {
         if (std::none_of(everything.begin(), everything.end(),
                          [&](const auto& kept) { return kept.key == estimate.key; }))
           everything.push_back(estimate);
@@ -159,7 +160,8 @@ int main(int argc, char** argv) {
     }
     tick_ms = 1e9;
     for (int repetition = 0; repetition < kRepetitions; ++repetition)
-      tick_ms = std::min(tick_ms, cli::millisecondsOf([&] { models.recognize(everything); }));
+      tick_ms =
+          std::min(tick_ms, asr_common::cli::millisecondsOf([&] { models.recognize(everything); }));
   }
   double achieved_hz = 0.0;
   std::size_t instances_seen = 0;
@@ -186,7 +188,7 @@ int main(int argc, char** argv) {
     }
     // Every object of every kitchen scene's first set at once: all ten trees have work to do.
     asr_msgs::ObjectEstimateList list;
-    for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+    for (const asr_common::cli::KitchenScene& kitchen : asr_common::cli::kitchenScenes()) {
       const auto configuration =
           asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene)
               .configuration(0);

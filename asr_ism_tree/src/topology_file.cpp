@@ -10,11 +10,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 namespace {
 

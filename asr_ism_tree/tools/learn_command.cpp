@@ -2,8 +2,8 @@
 #include <cmath>
 #include <iostream>
 
+#include "asr_common/cli/command_line.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/cli/object_lookup.hpp"
 #include "asr_ism_tree/cli/recognition_options.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
@@ -14,8 +14,8 @@
 
 namespace asr_ism_tree::tools {
 
-using cli::CommandLine;
-using cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 int runLearn(const std::vector<std::string>& arguments) {
   const CommandLine options(

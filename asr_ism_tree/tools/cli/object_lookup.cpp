@@ -1,10 +1,10 @@
 #include "asr_ism_tree/cli/object_lookup.hpp"
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_ism_tree::cli {
 
-std::size_t findObject(const std::string& name, const std::vector<asr_ism::ObjectKey>& objects,
+std::size_t findObject(const std::string& name, const std::vector<asr_common::ObjectKey>& objects,
                        const std::string& what) {
   const std::size_t colon = name.find(':');
   const std::string type = name.substr(0, colon);
@@ -20,9 +20,9 @@ std::size_t findObject(const std::string& name, const std::vector<asr_ism::Objec
   std::string known;
   for (const auto& object : objects)
     known += (known.empty() ? "" : ", ") + object.toString();
-  throw asr_ism::InputError(what + ": " +
-                            (matches.empty() ? "unknown object '" : "ambiguous object '") + name +
-                            "' (objects: " + known + ")");
+  throw asr_common::InputError(what + ": " +
+                               (matches.empty() ? "unknown object '" : "ambiguous object '") +
+                               name + "' (objects: " + known + ")");
 }
 
 }  // namespace asr_ism_tree::cli
