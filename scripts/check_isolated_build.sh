@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Checks that every package of the repository builds alone, the ROS way: in temporary
-# workspaces whose src/ links to the repository's packages,
+# workspaces whose src/ holds a copy of the repository's packages (as they are when it starts),
 #  1. `catkin build` (catkin-tools: one CMake project per package, in dependency order);
 #  2. `catkin_make_isolated --install`, then that the install space holds the libraries, headers,
 #     nodes, tools, launch files and parameters, and that a user of a package's ROS-free core
@@ -17,14 +17,20 @@ CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3)
 WORK="$(mktemp -d "${TMPDIR:-/tmp}/asr_isolated.XXXXXX")"
 trap 'rm -rf "$WORK"' EXIT
 
-# A workspace whose src/ links to every package (a folder with a package.xml) of the repository.
+# A workspace whose src/ holds every package (a folder with a package.xml) of the repository.
 new_workspace() {
   local workspace="$WORK/$1"
   mkdir -p "$workspace/src"
-  for manifest in "$ROOT"/*/package.xml; do
-    ln -s "$(dirname "$manifest")" "$workspace/src/"
-  done
+  cp -r "$WORK/packages/." "$workspace/src/"
   echo "$workspace"
+}
+
+# One copy of the packages for both workspaces, so that edits during the check do not matter.
+copy_packages() {
+  mkdir -p "$WORK/packages"
+  for manifest in "$ROOT"/*/package.xml; do
+    cp -r "$(dirname "$manifest")" "$WORK/packages/"
+  done
 }
 
 # Runs a build command quietly; on failure shows the end of its output.
@@ -112,6 +118,7 @@ CMAKE
   echo "exported libraries: the core links no roscpp; the ROS and CLI layers are separate"
 }
 
+copy_packages
 check_catkin_build
 check_catkin_make_isolated
 echo "check_isolated_build: passed"

@@ -11,8 +11,8 @@
 #include <limits>
 #include <memory>
 
+#include "asr_common/child_process.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
-#include "asr_common/testing/node_process.hpp"
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/rostest_support.hpp"
 #include "asr_common/testing/temp_dir.hpp"
@@ -23,7 +23,7 @@
 namespace asr_ism {
 namespace {
 
-using asr_common::testing::NodeProcess;
+using asr_common::ChildProcess;
 using asr_common::testing::TempDir;
 using asr_common::testing::waitFor;
 
@@ -43,7 +43,7 @@ struct Counter {
 class RecorderNodeTest : public ::testing::Test {
  protected:
   void startRecorder(const std::string& mode) {
-    recorder_ = std::make_unique<NodeProcess>(
+    recorder_ = std::make_unique<ChildProcess>(
         node("recorder"),
         std::vector<std::string>{"__name:=recorder", "_demonstration_file:=" + output_,
                                  "_scene:=Getraenke_Regal", "_mode:=" + mode});
@@ -55,7 +55,7 @@ class RecorderNodeTest : public ::testing::Test {
   TempDir dir_{"asr_recorder_rostest"};
   std::string output_ = dir_.file("recorded.sqlite");
   ros::NodeHandle handle_;
-  std::unique_ptr<NodeProcess> recorder_;
+  std::unique_ptr<ChildProcess> recorder_;
 };
 
 TEST_F(RecorderNodeTest, AReplayedRecordingIsRecordedSetForSetAndTheFileKeepsItsRows) {
@@ -68,7 +68,7 @@ TEST_F(RecorderNodeTest, AReplayedRecordingIsRecordedSetForSetAndTheFileKeepsIts
 
   startRecorder("message");
   Counter recorded(handle_, "recorder/recorded_sets");
-  NodeProcess replay(
+  ChildProcess replay(
       node("replay_demonstration"),
       {"__name:=replay", "_demonstration_file:=" + source, "_scene:=Getraenke_Regal", "_rate:=40"});
   ASSERT_TRUE(waitFor([&] { return recorded.value == original.stepCount(); }, 90))
@@ -137,7 +137,7 @@ TEST_F(RecorderNodeTest, MalformedEstimatesAreRejectedCountedAndRecordingGoesOn)
 }
 
 TEST_F(RecorderNodeTest, AMissingParameterStopsTheNodeWithAnError) {
-  NodeProcess bad(node("recorder"), {"__name:=bad_recorder", "_scene:=x"});
+  ChildProcess bad(node("recorder"), {"__name:=bad_recorder", "_scene:=x"});
   EXPECT_EQ(bad.waitForExit(std::chrono::seconds(20)), 1);
 }
 

@@ -7,9 +7,6 @@
 #include <asr_msgs/RecognizeScenes.h>
 #include <asr_msgs/SceneInstanceList.h>
 #include <ros/ros.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "asr_common/child_process.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
 #include "asr_common/cli/timing.hpp"
 #include "asr_common/recordings.hpp"
@@ -28,8 +26,6 @@
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 
-extern char** environ;
-
 namespace {
 
 using namespace asr_ism_tree;
@@ -37,27 +33,6 @@ using namespace asr_ism_tree;
 constexpr int kRepetitions = 5;       // per set; the fastest counts, as in asr_bench
 constexpr double kRateWindow = 10.0;  // s of publishing to average the rate over
 constexpr int kAskedHz = 20;          // the node's rate: twice the target, to show the headroom
-
-// A node started for the benchmark and stopped (SIGINT) when it goes.
-class Node {
- public:
-  Node(const std::string& executable, std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), executable);
-    std::vector<char*> argv;
-    for (std::string& argument : arguments)
-      argv.push_back(argument.data());
-    argv.push_back(nullptr);
-    if (::posix_spawn(&pid_, executable.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-      throw std::runtime_error("cannot start " + executable);
-  }
-  ~Node() {
-    ::kill(pid_, SIGINT);
-    ::waitpid(pid_, nullptr, 0);
-  }
-
- private:
-  pid_t pid_ = -1;
-};
 
 std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_common::Configuration& configuration) {
   std_msgs::Header header;
@@ -96,8 +71,9 @@ int main(int argc, char** argv) {
   std::vector<double> library_ms;
   std::vector<double> node_ms;
   {
-    Node node(nodes + "/scene_recognizer",
-              {"__name:=bench_recognizer", "_model_files:=" + gedeck_model, "_continuous:=false"});
+    asr_common::ChildProcess node(
+        nodes + "/scene_recognizer",
+        {"__name:=bench_recognizer", "_model_files:=" + gedeck_model, "_continuous:=false"});
     if (!ros::service::waitForService("recognize_scenes", ros::Duration(30))) {
       std::fprintf(stderr, "asr_node_bench: the scene_recognizer did not start\n");
       return 1;
@@ -168,7 +144,7 @@ int main(int argc, char** argv) {
   {
     // A list parameter cannot be given on a command line: set it before the node starts.
     handle.setParam("/bench_continuous/model_files", model_files);
-    Node node(
+    asr_common::ChildProcess node(
         nodes + "/scene_recognizer",
         {"__name:=bench_continuous", "_rate:=" + std::to_string(kAskedHz), "_estimate_timeout:=0"});
     ros::Publisher objects = handle.advertise<asr_msgs::ObjectEstimateList>("objects", 10);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "asr_common/atomic_file.hpp"
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/line_plot.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
@@ -38,18 +39,6 @@ std::vector<std::string> splitCommas(const std::string& text) {
       parts.push_back(part);
   }
   return parts;
-}
-
-// Writes `content` to `path` whole (temporary file + rename).
-void writeFile(const std::string& path, const std::string& content) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream file(temporary);
-    file << content;
-    if (!file)
-      throw asr_common::InputError("cannot write " + temporary);
-  }
-  std::filesystem::rename(temporary, path);
 }
 
 std::string markdownTable(const std::vector<TopologyTableRow>& rows) {
@@ -217,8 +206,8 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  writeFile(out_dir + "/topology_table.md", markdownTable(rows));
-  writeFile(out_dir + "/topology_table.csv", csvTable(rows));
+  asr_common::writeFileAtomically(out_dir + "/topology_table.md", markdownTable(rows));
+  asr_common::writeFileAtomically(out_dir + "/topology_table.csv", csvTable(rows));
   if (!points.empty())
     plotRuntimes(points, out_dir + "/topology_runtime.png");
 

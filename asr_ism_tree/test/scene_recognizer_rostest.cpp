@@ -13,8 +13,8 @@
 #include <limits>
 #include <memory>
 
+#include "asr_common/child_process.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
-#include "asr_common/testing/node_process.hpp"
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/rostest_support.hpp"
 #include "asr_common/testing/temp_dir.hpp"
@@ -25,7 +25,7 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_common::testing::NodeProcess;
+using asr_common::ChildProcess;
 using asr_common::testing::TempDir;
 using asr_common::testing::waitFor;
 
@@ -57,7 +57,7 @@ class SceneRecognizerNodeTest : public ::testing::Test {
     sqlite::saveIsmTree(other_model_,
                         generateIsmTree(muesli, RelationTopology::complete(muesli.objects()), {}),
                         "test");
-    node_ = std::make_unique<NodeProcess>(
+    node_ = std::make_unique<ChildProcess>(
         std::string(ASR_NODE_DIR) + "/scene_recognizer",
         std::vector<std::string>{"__name:=scene_recognizer", "_model_files:=" + model_,
                                  "_rate:=" + std::to_string(kRate), "_estimate_timeout:=0"});
@@ -77,7 +77,7 @@ class SceneRecognizerNodeTest : public ::testing::Test {
   asr_ism::Demonstration demonstration_;
   std::string model_;
   std::string other_model_;
-  std::unique_ptr<NodeProcess> node_;
+  std::unique_ptr<ChildProcess> node_;
   ros::NodeHandle handle_;
   ros::ServiceClient recognize_;
 };
@@ -182,20 +182,21 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
   TempDir dir("asr_trainer_rostest");
   const std::string model = dir.file("trained.sqlite");
   for (const char* topology : {"star", "optimised"}) {
-    NodeProcess trainer(std::string(ASR_NODE_DIR) + "/trainer",
-                        {std::string("__name:=trainer_") + topology,
-                         "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
-                         "_model_file:=" + model, "_scenes:=Getraenke_Regal",
-                         std::string("_topology:=") + topology, "_tests:=100"});
+    ChildProcess trainer(
+        std::string(ASR_NODE_DIR) + "/trainer",
+        {std::string("__name:=trainer_") + topology,
+         "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
+         "_model_file:=" + model, "_scenes:=Getraenke_Regal", std::string("_topology:=") + topology,
+         "_tests:=100"});
     EXPECT_EQ(trainer.waitForExit(std::chrono::seconds(60)), 0) << topology;
     const IsmTree tree = sqlite::loadIsmTree(model, "Getraenke_Regal");
     EXPECT_TRUE(tree.topology.isConnected());
     if (std::string(topology) == "star")
       EXPECT_EQ(tree.isms.size(), 1u);
   }
-  NodeProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
-                  {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
-                   "_model_file:=" + model, "_topology:=star"});
+  ChildProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
+                   {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
+                    "_model_file:=" + model, "_topology:=star"});
   EXPECT_EQ(bad.waitForExit(std::chrono::seconds(30)), 1);
 }
 

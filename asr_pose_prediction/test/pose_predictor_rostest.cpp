@@ -12,7 +12,7 @@
 #include <memory>
 #include <set>
 
-#include "asr_common/testing/node_process.hpp"
+#include "asr_common/child_process.hpp"
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/rostest_support.hpp"
 #include "asr_common/testing/temp_dir.hpp"
@@ -25,7 +25,7 @@
 namespace asr_pose_prediction {
 namespace {
 
-using asr_common::testing::NodeProcess;
+using asr_common::ChildProcess;
 using asr_common::testing::TempDir;
 using asr_common::testing::waitFor;
 
@@ -39,7 +39,7 @@ class PosePredictorNodeTest : public ::testing::Test {
         demonstration_, asr_ism_tree::RelationTopology::complete(demonstration_.objects()), {});
     const std::string model = dir_.file("gedeck.sqlite");
     asr_ism_tree::sqlite::saveIsmTree(model, tree_, "test");
-    node_ = std::make_unique<NodeProcess>(
+    node_ = std::make_unique<ChildProcess>(
         std::string(ASR_NODE_DIR) + "/pose_predictor",
         std::vector<std::string>{"__name:=pose_predictor", "_model_files:=" + model,
                                  "_samples:=50"});
@@ -64,7 +64,7 @@ class PosePredictorNodeTest : public ::testing::Test {
   TempDir dir_{"asr_pose_predictor_rostest"};
   asr_ism::Demonstration demonstration_;
   asr_ism_tree::IsmTree tree_;
-  std::unique_ptr<NodeProcess> node_;
+  std::unique_ptr<ChildProcess> node_;
   ros::NodeHandle handle_;
   ros::ServiceClient predict_;
 };

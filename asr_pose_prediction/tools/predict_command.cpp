@@ -6,8 +6,8 @@
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/timing.hpp"
 #include "asr_common/input_error.hpp"
+#include "asr_common/object_name.hpp"
 #include "asr_ism_tree/cli/configuration_source.hpp"
-#include "asr_ism_tree/cli/object_lookup.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "prediction_output.hpp"
@@ -49,7 +49,7 @@ int runPredict(const std::vector<std::string>& arguments) {
   const asr_ism_tree::IsmTree tree = asr_ism_tree::sqlite::loadIsmTree(model_path, scene);
   const PosePredictor predictor(tree);
   if (options.has("object")) {
-    prediction_options.object = tree.objects()[asr_ism_tree::cli::findObject(
+    prediction_options.object = tree.objects()[asr_common::resolveObjectName(
         options.required("object"), tree.objects(), "--object")];
   }
   const asr_common::Configuration configuration =

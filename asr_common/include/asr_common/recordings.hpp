@@ -1,20 +1,18 @@
 #pragma once
 
-#include <sys/stat.h>
-
-#include <cstdlib>
 #include <string>
 
 namespace asr_common {
 
-/// The folder of the real ASR recordings that tests and benchmarks read: $ASR_RECORDINGS_DIR if
-/// set, otherwise `compiled_default` (../shared/data/asr_recordings beside the repository).
-/// Returns an empty string if the folder does not exist, so callers can skip with a message.
-inline std::string recordingsDirectory(const std::string& compiled_default) {
-  const char* from_environment = std::getenv("ASR_RECORDINGS_DIR");
-  const std::string directory = from_environment != nullptr ? from_environment : compiled_default;
-  struct stat info;
-  return stat(directory.c_str(), &info) == 0 && S_ISDIR(info.st_mode) ? directory : std::string();
-}
+/// Where the real ASR recordings (../shared/data/asr_recordings beside the repository) are
+/// looked for, the one rule for tests, benchmarks and tools: `given` if not empty (a
+/// --recordings option), else $ASR_RECORDINGS_DIR if set, else `compiled_default`.
+std::string recordingsLocation(const std::string& compiled_default, const std::string& given = "");
+
+/// recordingsLocation if it is a folder; an empty string otherwise, so callers can skip with a
+/// message.
+std::string recordingsDirectory(const std::string& compiled_default, const std::string& given = "");
+
+bool isDirectory(const std::string& path);
 
 }  // namespace asr_common

@@ -4,8 +4,11 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
+#include "asr_common/atomic_file.hpp"
 #include "asr_common/input_error.hpp"
 
 namespace asr_common::cli {
@@ -61,12 +64,13 @@ void drawLinePlot(const LinePlot& plot, const std::string& path) {
     std::filesystem::remove(temporary, error);
     throw InputError(path + ": gnuplot failed to draw the plot (is gnuplot-nox installed?)");
   }
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    const std::string reason = error.message();
-    std::filesystem::remove(temporary, error);
-    throw InputError(path + ": cannot write the plot: " + reason);
-  }
+  // gnuplot wrote a file of its own; the plot replaces `path` whole, like every file the suite
+  // writes.
+  std::ifstream drawn(temporary, std::ios::binary);
+  const std::string png((std::istreambuf_iterator<char>(drawn)), std::istreambuf_iterator<char>());
+  drawn.close();
+  std::filesystem::remove(temporary, error);
+  writeFileAtomically(path, png);
 }
 
 }  // namespace asr_common::cli

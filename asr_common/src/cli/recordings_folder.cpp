@@ -1,22 +1,8 @@
 #include "asr_common/cli/recordings_folder.hpp"
 
-#include <sys/stat.h>
-
-#include <cstdlib>
+#include "asr_common/recordings.hpp"
 
 namespace asr_common::cli {
-
-std::string recordingsFolder(const CommandLine& options, const std::string& compiled_default) {
-  if (options.has("recordings"))
-    return options.required("recordings");
-  const char* from_environment = std::getenv("ASR_RECORDINGS_DIR");
-  return from_environment != nullptr ? from_environment : compiled_default;
-}
-
-bool isDirectory(const std::string& path) {
-  struct stat info;
-  return stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
-}
 
 const std::vector<KitchenScene>& kitchenScenes() {
   static const std::vector<KitchenScene> scenes = {
@@ -32,7 +18,8 @@ const std::vector<KitchenScene>& kitchenScenes() {
 std::optional<std::string> benchmarkRecordings(const CommandLine& options,
                                                const std::string& compiled_default,
                                                const std::string& program, std::ostream& progress) {
-  const std::string recordings = recordingsFolder(options, compiled_default);
+  const std::string given = options.has("recordings") ? options.required("recordings") : "";
+  const std::string recordings = recordingsLocation(compiled_default, given);
   if (isDirectory(recordings))
     return recordings;
   progress << program << ": recordings folder '" << recordings

@@ -9,15 +9,9 @@
 
 namespace asr_common::cli {
 
-/// The recordings folder a benchmark reads: `--recordings DIR`, else $ASR_RECORDINGS_DIR, else
-/// `compiled_default` (../shared/data/asr_recordings beside the source tree). The command must
-/// declare the option recordings. The folder may not exist: check with isDirectory.
-std::string recordingsFolder(const CommandLine& options, const std::string& compiled_default);
-
-bool isDirectory(const std::string& path);
-
-/// recordingsFolder if it exists; otherwise says on `progress` that `program` skips the kitchen
-/// scenes and how to point it at the recordings, and returns nothing.
+/// The recordings folder a benchmark reads (`--recordings DIR`, which the command must declare,
+/// else as recordingsLocation says) if it exists; otherwise says on `progress` that `program` skips
+/// the kitchen scenes and how to point it at the recordings, and returns nothing.
 std::optional<std::string> benchmarkRecordings(const CommandLine& options,
                                                const std::string& compiled_default,
                                                const std::string& program, std::ostream& progress);

@@ -3,13 +3,11 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "asr_common/child_process.hpp"
 #include "asr_common/testing/temp_dir.hpp"
 
 namespace asr_common::testing {
@@ -19,13 +17,6 @@ struct ToolRun {
   std::string out;
   std::vector<std::string> err;  // stderr, line by line
 };
-
-inline std::string shellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text)
-    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
 
 inline std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> result;
@@ -38,16 +29,12 @@ inline std::vector<std::string> lines(const std::string& text) {
 /// Runs `tool arguments...` with no standard input; stdout and stderr go through files in `dir`.
 inline ToolRun runTool(const std::string& tool, const TempDir& dir,
                        const std::vector<std::string>& arguments) {
-  std::string command = shellQuoted(tool);
-  for (const std::string& argument : arguments)
-    command += " " + shellQuoted(argument);
   const std::string out = dir.file("tool.stdout");
   const std::string err = dir.file("tool.stderr");
-  command += " < /dev/null > " + shellQuoted(out) + " 2> " + shellQuoted(err);
-  const int status = std::system(command.c_str());
+  ChildProcess process(tool, arguments, out, err);
   ToolRun run;
-  EXPECT_TRUE(status != -1 && WIFEXITED(status)) << command << " did not exit normally";
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.exit_code = process.wait();
+  EXPECT_NE(run.exit_code, -1) << tool << " did not exit normally";
   run.out = fileBytes(out);
   run.err = lines(fileBytes(err));
   return run;
