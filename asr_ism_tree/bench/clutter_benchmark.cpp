@@ -17,7 +17,7 @@ namespace {
 constexpr double kStopAfterMs = 30000.0;
 constexpr std::size_t kRecordedSet = 5;
 
-double millisecondsOf(const TreeRecognizer& recognizer, const asr_ism::Configuration& input,
+double millisecondsOf(const TreeRecognizer& recognizer, const asr_common::Configuration& input,
                       std::vector<SceneInstance>& instances) {
   const auto start = std::chrono::steady_clock::now();
   instances = recognizer.recognize(input);
@@ -31,12 +31,12 @@ std::vector<std::size_t> clutterSizes() {
   return {100, 250, 500, 1000, 2000, 5000, 10000};
 }
 
-asr_ism::Configuration clutteredCopies(const asr_ism::Configuration& recorded,
+asr_common::Configuration clutteredCopies(const asr_common::Configuration& recorded,
                                        std::size_t estimates, std::uint32_t seed) {
   asr_ism::PortableRandom random(seed);
-  asr_ism::Configuration configuration;
+  asr_common::Configuration configuration;
   for (std::size_t i = 0; i < estimates; ++i) {
-    asr_ism::ObjectEstimate estimate = recorded[i % recorded.size()];
+    asr_common::ObjectEstimate estimate = recorded[i % recorded.size()];
     if (i >= recorded.size()) {
       const Eigen::Vector3d shift(random.gaussian(), random.gaussian(), random.gaussian());
       const Eigen::Vector3d axis(random.gaussian(), random.gaussian(), random.gaussian());
@@ -62,7 +62,7 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
        generateIsmTree(demonstration,
                        RelationTopology::star(objects, chooseStarCenter(demonstration)), {})},
       {"complete", generateIsmTree(demonstration, RelationTopology::complete(objects), {})}};
-  const asr_ism::Configuration recorded = demonstration.configuration(kRecordedSet);
+  const asr_common::Configuration recorded = demonstration.configuration(kRecordedSet);
   std::vector<ClutterRow> rows;
   for (const auto& [topology, tree] : trees) {
     TreeRecognitionParameters parameters;

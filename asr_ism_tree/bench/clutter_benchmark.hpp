@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "asr_ism/object.hpp"
+#include "asr_common/object.hpp"
 #include "benchmark_settings.hpp"
 
 namespace asr_ism_tree::bench {
@@ -32,7 +32,7 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
 void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows);
 
 /// A configuration of `estimates` jittered copies of `recorded`'s estimates, keys kept.
-asr_ism::Configuration clutteredCopies(const asr_ism::Configuration& recorded,
+asr_common::Configuration clutteredCopies(const asr_common::Configuration& recorded,
                                        std::size_t estimates, std::uint32_t seed);
 
 }  // namespace asr_ism_tree::bench

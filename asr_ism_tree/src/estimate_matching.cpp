@@ -5,7 +5,7 @@
 namespace asr_ism_tree {
 
 EstimateMatching matchEstimates(const std::vector<ObjectKey>& scene_objects,
-                                const asr_ism::Configuration& configuration) {
+                                const asr_common::Configuration& configuration) {
   EstimateMatching matching;
   matching.candidates.resize(configuration.size());
   for (std::size_t e = 0; e < configuration.size(); ++e) {

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <tuple>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism_tree/estimate_matching.hpp"
 
 namespace asr_ism_tree {
@@ -79,10 +79,10 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
     : tree_(tree), parameters_(parameters), pool_(pool) {
   tree_.validate("ISM tree");
   if (parameters_.results_passed_up == 0) {
-    throw asr_ism::InputError("tree recognition: results_passed_up must be at least 1");
+    throw asr_common::InputError("tree recognition: results_passed_up must be at least 1");
   }
   if (parameters_.max_estimates == 0 || parameters_.max_labellings == 0) {
-    throw asr_ism::InputError("tree recognition: max_estimates and max_labellings must be >= 1");
+    throw asr_common::InputError("tree recognition: max_estimates and max_labellings must be >= 1");
   }
   levels_.resize(tree_.height());
   for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
@@ -101,12 +101,12 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
 
 namespace {
 
-std::vector<Pose> validatedPoses(const asr_ism::Configuration& configuration) {
+std::vector<Pose> validatedPoses(const asr_common::Configuration& configuration) {
   std::vector<Pose> poses;
   poses.reserve(configuration.size());
   for (std::size_t i = 0; i < configuration.size(); ++i) {
     const auto& estimate = configuration[i];
-    poses.push_back(asr_ism::validatedPose(
+    poses.push_back(asr_common::validatedPose(
         estimate.pose.position, estimate.pose.orientation,
         "object estimate " + std::to_string(i) + " (" + estimate.key.toString() + ")"));
   }
@@ -114,7 +114,7 @@ std::vector<Pose> validatedPoses(const asr_ism::Configuration& configuration) {
 }
 
 // The estimates in a canonical order (by key, then pose), so the input order cannot matter.
-std::vector<int> canonicalOrder(const asr_ism::Configuration& configuration,
+std::vector<int> canonicalOrder(const asr_common::Configuration& configuration,
                                 const std::vector<Pose>& poses) {
   std::vector<int> canonical(configuration.size());
   std::iota(canonical.begin(), canonical.end(), 0);
@@ -257,10 +257,10 @@ SceneInstance TreeRecognizer::assembleInstance(
   return instance;
 }
 
-std::vector<SceneInstance> TreeRecognizer::recognize(const asr_ism::Configuration& configuration,
+std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configuration& configuration,
                                                      TreeRecognitionStats* stats) const {
   if (configuration.size() > parameters_.max_estimates) {
-    throw asr_ism::InputError("scene '" + tree_.scene +
+    throw asr_common::InputError("scene '" + tree_.scene +
                               "': " + std::to_string(configuration.size()) +
                               " object estimates, more than the configured maximum of " +
                               std::to_string(parameters_.max_estimates) + " per recognition");
@@ -270,7 +270,7 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_ism::Configuratio
   const EstimateMatching matching = matchEstimates(tree_.objects(), configuration);
   const std::size_t labellings = matching.labellingCount();
   if (labellings > parameters_.max_labellings) {
-    throw asr_ism::InputError(
+    throw asr_common::InputError(
         "scene '" + tree_.scene + "': the estimates without a known id could stand for the " +
         "objects of their types in more than " + std::to_string(parameters_.max_labellings) +
         " ways; give their ids, or fewer estimates of types the scene has several objects of");

@@ -11,10 +11,10 @@
 #include <set>
 #include <string>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/topology_file.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
@@ -24,9 +24,9 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::Configuration;
-using asr_ism::Pose;
-using asr_ism::testing::recording;
+using asr_common::Configuration;
+using asr_common::Pose;
+using asr_common::testing::recording;
 
 constexpr double kDegree = M_PI / 180.0;
 // How much lower than without it a badly seen object may leave the best instance of a tree with
@@ -80,7 +80,7 @@ const Learned& learned(const SceneFile& scene) {
     entry->trees.emplace_back(
         "complete", generateIsmTree(entry->demonstration, RelationTopology::complete(objects), {}));
     if (std::string(scene.optimised).size() > 0) {
-      const asr_ism::testing::TempDir folder("recognition_properties");
+      const asr_common::testing::TempDir folder("recognition_properties");
       const std::string path = folder.write("optimised.txt", scene.optimised);
       entry->trees.emplace_back(
           "optimised", generateIsmTree(entry->demonstration, readTopologyFile(path, objects), {}));
@@ -280,7 +280,7 @@ TEST(TypeMatching, TooManyAssignmentsAreRefusedClearly) {
   try {
     recognizer.recognize(configuration);
     ADD_FAILURE() << "no error";
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("more than 8 ways"), std::string::npos)
         << error.what();
   }
@@ -288,7 +288,7 @@ TEST(TypeMatching, TooManyAssignmentsAreRefusedClearly) {
   try {
     TreeRecognizer(scene.trees[0].second, parameters).recognize(configuration);
     ADD_FAILURE() << "no error";
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("more than the configured maximum of 5"),
               std::string::npos)
         << error.what();

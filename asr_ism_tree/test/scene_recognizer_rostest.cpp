@@ -13,29 +13,29 @@
 #include <limits>
 #include <memory>
 
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/child_process.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/rostest_support.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/node_process.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/rostest_support.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::testing::NodeProcess;
-using asr_ism::testing::TempDir;
-using asr_ism::testing::waitFor;
+using asr_common::ChildProcess;
+using asr_common::testing::TempDir;
+using asr_common::testing::waitFor;
 
 constexpr double kRate = 2.0;  // Hz, in continuous mode
 
-asr_msgs::ObjectEstimate estimateMessage(const asr_ism::ObjectEstimate& estimate) {
+asr_msgs::ObjectEstimate estimateMessage(const asr_common::ObjectEstimate& estimate) {
   std_msgs::Header header;
   header.frame_id = "map";
   header.stamp = ros::Time::now();
-  return asr_ism::ros_interface::toEstimateMessage(estimate, header);
+  return asr_common::ros_interface::toEstimateMessage(estimate, header);
 }
 
 // Waits until `done` holds, spinning, for at most `seconds`.
@@ -45,19 +45,19 @@ class SceneRecognizerNodeTest : public ::testing::Test {
   void SetUp() override {
     REQUIRE_RECORDINGS();
     demonstration_ = asr_ism::sqlite::readDemonstration(
-        asr_ism::testing::recording("story_2.sqlite"), "Brot_Regal");
+        asr_common::testing::recording("story_2.sqlite"), "Brot_Regal");
     model_ = dir_.file("brot_regal.sqlite");
     sqlite::saveIsmTree(
         model_,
         generateIsmTree(demonstration_, RelationTopology::complete(demonstration_.objects()), {}),
         "test");
     const asr_ism::Demonstration muesli = asr_ism::sqlite::readDemonstration(
-        asr_ism::testing::recording("story_2.sqlite"), "Muesli_Regal");
+        asr_common::testing::recording("story_2.sqlite"), "Muesli_Regal");
     other_model_ = dir_.file("muesli_regal.sqlite");
     sqlite::saveIsmTree(other_model_,
                         generateIsmTree(muesli, RelationTopology::complete(muesli.objects()), {}),
                         "test");
-    node_ = std::make_unique<NodeProcess>(
+    node_ = std::make_unique<ChildProcess>(
         std::string(ASR_NODE_DIR) + "/scene_recognizer",
         std::vector<std::string>{"__name:=scene_recognizer", "_model_files:=" + model_,
                                  "_rate:=" + std::to_string(kRate), "_estimate_timeout:=0"});
@@ -65,9 +65,9 @@ class SceneRecognizerNodeTest : public ::testing::Test {
     ASSERT_TRUE(recognize_.waitForExistence(ros::Duration(30))) << "scene_recognizer did not start";
   }
 
-  asr_msgs::RecognizeScenes::Response ask(const asr_ism::Configuration& configuration) {
+  asr_msgs::RecognizeScenes::Response ask(const asr_common::Configuration& configuration) {
     asr_msgs::RecognizeScenes service;
-    for (const asr_ism::ObjectEstimate& estimate : configuration)
+    for (const asr_common::ObjectEstimate& estimate : configuration)
       service.request.objects.push_back(estimateMessage(estimate));
     EXPECT_TRUE(recognize_.call(service));
     return service.response;
@@ -77,7 +77,7 @@ class SceneRecognizerNodeTest : public ::testing::Test {
   asr_ism::Demonstration demonstration_;
   std::string model_;
   std::string other_model_;
-  std::unique_ptr<NodeProcess> node_;
+  std::unique_ptr<ChildProcess> node_;
   ros::NodeHandle handle_;
   ros::ServiceClient recognize_;
 };
@@ -94,8 +94,8 @@ TEST_F(SceneRecognizerNodeTest, ServiceRecognisesARecordedConfiguration) {
 }
 
 TEST_F(SceneRecognizerNodeTest, ClutterOnlyHasNoInstance) {
-  asr_ism::Configuration clutter = demonstration_.configuration(7);
-  for (asr_ism::ObjectEstimate& estimate : clutter)
+  asr_common::Configuration clutter = demonstration_.configuration(7);
+  for (asr_common::ObjectEstimate& estimate : clutter)
     estimate.key.type = "Unknown_" + estimate.key.type;
   const asr_msgs::RecognizeScenes::Response response = ask(clutter);
   EXPECT_TRUE(response.instances.empty());
@@ -104,7 +104,7 @@ TEST_F(SceneRecognizerNodeTest, ClutterOnlyHasNoInstance) {
 
 TEST_F(SceneRecognizerNodeTest, MalformedEstimatesAreRejectedCountedAndTheNodeKeepsRunning) {
   asr_msgs::RecognizeScenes service;
-  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(7))
+  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(7))
     service.request.objects.push_back(estimateMessage(estimate));
   asr_msgs::ObjectEstimate nan = service.request.objects[0];
   nan.pose.pose.position.x = std::numeric_limits<double>::quiet_NaN();
@@ -114,7 +114,7 @@ TEST_F(SceneRecognizerNodeTest, MalformedEstimatesAreRejectedCountedAndTheNodeKe
   asr_msgs::ObjectEstimate empty = service.request.objects[2];
   empty.type = "";
   service.request.objects = {nan, zero, empty};
-  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(7))
+  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(7))
     service.request.objects.push_back(estimateMessage(estimate));
   ASSERT_TRUE(recognize_.call(service));
   EXPECT_EQ(service.response.rejected_estimates, 3u);
@@ -149,7 +149,7 @@ TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesWithinTwoPeriods) {
   ASSERT_TRUE(waitFor(
       [&] { return objects.getNumSubscribers() > 0 && instances.getNumPublishers() > 0; }, 30));
   asr_msgs::ObjectEstimateList list;
-  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(12))
+  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(12))
     list.objects.push_back(estimateMessage(estimate));
   published = ros::WallTime::now();
   objects.publish(list);
@@ -182,20 +182,21 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
   TempDir dir("asr_trainer_rostest");
   const std::string model = dir.file("trained.sqlite");
   for (const char* topology : {"star", "optimised"}) {
-    NodeProcess trainer(std::string(ASR_NODE_DIR) + "/trainer",
-                        {std::string("__name:=trainer_") + topology,
-                         "_demonstration_file:=" + asr_ism::testing::recording("story_2.sqlite"),
-                         "_model_file:=" + model, "_scenes:=Getraenke_Regal",
-                         std::string("_topology:=") + topology, "_tests:=100"});
+    ChildProcess trainer(
+        std::string(ASR_NODE_DIR) + "/trainer",
+        {std::string("__name:=trainer_") + topology,
+         "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
+         "_model_file:=" + model, "_scenes:=Getraenke_Regal", std::string("_topology:=") + topology,
+         "_tests:=100"});
     EXPECT_EQ(trainer.waitForExit(std::chrono::seconds(60)), 0) << topology;
     const IsmTree tree = sqlite::loadIsmTree(model, "Getraenke_Regal");
     EXPECT_TRUE(tree.topology.isConnected());
     if (std::string(topology) == "star")
       EXPECT_EQ(tree.isms.size(), 1u);
   }
-  NodeProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
-                  {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
-                   "_model_file:=" + model, "_topology:=star"});
+  ChildProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
+                   {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
+                    "_model_file:=" + model, "_topology:=star"});
   EXPECT_EQ(bad.waitForExit(std::chrono::seconds(30)), 1);
 }
 
@@ -203,5 +204,5 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
 }  // namespace asr_ism_tree
 
 int main(int argc, char** argv) {
-  return asr_ism::testing::runRostests(argc, argv, "scene_recognizer_rostest");
+  return asr_common::testing::runRostests(argc, argv, "scene_recognizer_rostest");
 }

@@ -3,11 +3,11 @@
 #include <cstddef>
 #include <vector>
 
-#include "asr_ism/object.hpp"
+#include "asr_common/object.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::ObjectKey;
+using asr_common::ObjectKey;
 
 /// Which of a scene's objects each estimate of a configuration may stand for. An estimate whose
 /// type and id name a scene object stands for that object. One without an id, or with an id the
@@ -29,6 +29,6 @@ struct EstimateMatching {
 };
 
 EstimateMatching matchEstimates(const std::vector<ObjectKey>& scene_objects,
-                                const asr_ism::Configuration& configuration);
+                                const asr_common::Configuration& configuration);
 
 }  // namespace asr_ism_tree

@@ -51,7 +51,7 @@ class TreeRecognizer {
   /// any object of its type (the best assignment wins, several estimates of one object count
   /// once, and every instance says `ids_ignored`). Throws InputError for a non-finite pose and
   /// for more estimates or assignments than the parameters allow.
-  std::vector<SceneInstance> recognize(const asr_ism::Configuration& configuration,
+  std::vector<SceneInstance> recognize(const asr_common::Configuration& configuration,
                                        TreeRecognitionStats* stats = nullptr) const;
 
   const IsmTree& tree() const { return tree_; }

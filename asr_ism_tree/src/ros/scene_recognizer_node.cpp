@@ -4,17 +4,17 @@
 #include <std_msgs/UInt32.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/ros/node_parameters.hpp"
+#include "asr_common/input_error.hpp"
+#include "asr_common/ros/node_parameters.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_ism_tree/ros/scene_markers.hpp"
 
 namespace asr_ism_tree::ros_interface {
 
-using asr_ism::ros_interface::checkParameter;
-using asr_ism::ros_interface::fixedFrameParameter;
-using asr_ism::ros_interface::optionalParameter;
-using asr_ism::ros_interface::stringListParameter;
+using asr_common::ros_interface::checkParameter;
+using asr_common::ros_interface::fixedFrameParameter;
+using asr_common::ros_interface::optionalParameter;
+using asr_common::ros_interface::stringListParameter;
 
 SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
@@ -58,7 +58,7 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
 
 bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,
                                     asr_msgs::RecognizeScenes::Response& response) {
-  asr_ism::Configuration configuration;
+  asr_common::Configuration configuration;
   std::shared_ptr<const SceneModels> models;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -83,7 +83,7 @@ bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,
     if (instances.empty())
       response.message = configuration.empty() ? "no valid object estimate in the request"
                                                : "no instance of the scenes asked for";
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     response.message = error.what();
   }
   return true;
@@ -100,7 +100,7 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
     models_ = std::move(loaded);
     model_files_ = files;
     response.success = true;
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     response.success = false;
     response.message = std::string(error.what()) + "; the previous models stay in use";
     ROS_WARN("scene_recognizer: reload failed: %s", response.message.c_str());
@@ -124,7 +124,7 @@ void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
 }
 
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
-  asr_ism::Configuration configuration;
+  asr_common::Configuration configuration;
   std::shared_ptr<const SceneModels> models;
   asr_msgs::SceneInstanceList list;
   {
@@ -138,7 +138,7 @@ void SceneRecognizerNode::tick(const ros::TimerEvent&) {
   try {
     if (!configuration.empty())
       instances = models->recognize(configuration);
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     // Too many estimates (max_estimates): publish no instance rather than stop the node.
     ROS_WARN_THROTTLE(5.0, "scene_recognizer: %s", error.what());
   }

@@ -2,12 +2,12 @@
 
 #include <ctime>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
 
 namespace asr_ism_tree::sqlite {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 using asr_ism::sqlite::Database;
 using asr_ism::sqlite::Statement;
 using asr_ism::sqlite::Transaction;
@@ -279,14 +279,14 @@ IsmTree loadIsmTree(const std::string& path, const std::string& scene) {
     if (m < 0 || m >= static_cast<std::int64_t>(members.size())) {
       throw InputError(path + ", scene '" + scene + "': a stored relative pose names no member");
     }
-    asr_ism::Pose pose;
+    asr_common::Pose pose;
     pose.position = Eigen::Vector3d(pose_rows.columnDouble(2), pose_rows.columnDouble(3),
                                     pose_rows.columnDouble(4));
     pose.orientation = Eigen::Quaterniond(pose_rows.columnDouble(5), pose_rows.columnDouble(6),
                                           pose_rows.columnDouble(7), pose_rows.columnDouble(8));
     // Checked, but kept bit for bit as stored: a loaded tree recognises exactly like the learned.
-    asr_ism::validatedPose(pose.position, pose.orientation,
-                           path + ", scene '" + scene + "', a relative pose", 1e-9);
+    asr_common::validatedPose(pose.position, pose.orientation,
+                              path + ", scene '" + scene + "', a relative pose", 1e-9);
     members[m].relative_poses.push_back({pose, static_cast<std::uint32_t>(pose_rows.columnInt(9))});
   }
   tree.validate(path);
