@@ -339,11 +339,11 @@ class Bar {
   double forBin(const Neighbourhood& n) const {
     double bar = kNoThreshold;
     if (!dropsSubsets()) {
-      // Only results better than anything this bin (and every later one: bins come by falling
-      // bound) can give are sure to stay; a perfect result found later could drop the others.
+      // Only results better than any perfect result still possible are sure to stay; a perfect
+      // result found later could drop the others.
       std::size_t sure = 0;
       for (const auto& entry : best_)
-        sure += entry.objective > n.upper_bound + kBoundMargin ? 1 : 0;
+        sure += entry.objective > perfect_bound_ + kBoundMargin ? 1 : 0;
       if (sure >= best_count_)
         return best_[best_count_ - 1].objective;
     }
@@ -355,6 +355,10 @@ class Bar {
     }
     return bar;
   }
+
+  // The highest objective a perfect result of the bins not yet searched could have: the upper
+  // bound of the best such bin with one input per member (perfect results need one).
+  void setPerfectBound(double bound) { perfect_bound_ = bound; }
 
   void add(const Hypothesis& result) {
     std::vector<int> atoms = unionOfAtoms(result.assignment, atoms_of_input_);
@@ -411,6 +415,7 @@ class Bar {
   const std::size_t best_count_;
   std::vector<std::pair<double, std::vector<int>>> dominators_;
   std::vector<BestEntry> best_;
+  double perfect_bound_ = std::numeric_limits<double>::infinity();
 };
 
 void checkInputs(const Ism& ism, const std::vector<IsmInput>& inputs,
@@ -500,9 +505,16 @@ std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar
   std::stable_sort(bin_order.begin(), bin_order.end(), [&](std::size_t a, std::size_t b) {
     return neighbourhoods[a].upper_bound > neighbourhoods[b].upper_bound;
   });
+  // perfect_bound[i]: the highest bound of a bin with one input per member from position i on.
+  std::vector<double> perfect_bound(bin_count + 1, kNoThreshold);
+  for (std::size_t i = bin_count; i-- > 0;) {
+    const Neighbourhood& n = neighbourhoods[bin_order[i]];
+    perfect_bound[i] = n.one_input_per_member ? n.upper_bound : perfect_bound[i + 1];
+  }
   std::vector<Hypothesis> found;
-  for (std::size_t b : bin_order) {
-    const Neighbourhood& n = neighbourhoods[b];
+  for (std::size_t i = 0; i < bin_count; ++i) {
+    const Neighbourhood& n = neighbourhoods[bin_order[i]];
+    bar.setPerfectBound(perfect_bound[i]);
     search.searchBin(
         n, [&] { return bar.forBin(n); },
         [&](Hypothesis&& hypothesis) {
