@@ -2,7 +2,10 @@
 // node against the library. (1) End-to-end latency of the recognize_scenes service for every
 // recorded set of gedeck with a complete topology, against the library's own recognition of the
 // same sets; target: within 2x. (2) The rate at which scene_instances are published in
-// continuous mode with the trees of all ten kitchen scenes loaded; target: >= 10 Hz.
+// continuous mode with the trees of all ten kitchen scenes loaded; target: >= 10 Hz. (3) The
+// longest gap between two lists on scene_instances while a heavy recognize_scenes call (gedeck
+// set 5 repeated with jitter to 200 estimates, seconds of work) runs; target: at most two periods
+// (the call delays the continuous output by at most one period).
 #include <asr_msgs/ObjectEstimateList.h>
 #include <asr_msgs/RecognizeScenes.h>
 #include <asr_msgs/SceneInstanceList.h>
@@ -13,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "asr_common/child_process.hpp"
@@ -25,6 +29,7 @@
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
+#include "clutter_benchmark.hpp"
 
 namespace {
 
@@ -42,6 +47,13 @@ std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_common::Configuration
   for (const asr_common::ObjectEstimate& estimate : configuration)
     messages.push_back(asr_common::ros_interface::toEstimateMessage(estimate, header));
   return messages;
+}
+
+// Gedeck's recorded set 5 repeated with 2 cm / 3 deg jitter up to `count` estimates.
+asr_common::Configuration clutteredGedeck(const std::string& recordings, std::size_t count) {
+  const auto recorded =
+      asr_ism::sqlite::readDemonstration(recordings + "/story_1.sqlite", "gedeck").configuration(5);
+  return bench::clutteredCopies(recorded, count, 1);
 }
 
 }  // namespace
@@ -141,6 +153,10 @@ int main(int argc, char** argv) {
   }
   double achieved_hz = 0.0;
   std::size_t instances_seen = 0;
+  double heavy_call_s = 0.0;
+  double longest_gap_s = 0.0;
+  std::string heavy_message;
+  std::size_t heavy_instances = 0;
   {
     // A list parameter cannot be given on a command line: set it before the node starts.
     handle.setParam("/bench_continuous/model_files", model_files);
@@ -184,6 +200,34 @@ int main(int argc, char** argv) {
       ++last;
     if (last > 0)
       achieved_hz = last / (arrivals[last] - arrivals.front()).toSec();
+
+    // A heavy service call on the node's other thread, while the timer keeps publishing.
+    asr_msgs::RecognizeScenes heavy;
+    heavy.request.scenes = {"gedeck"};
+    heavy.request.objects = messagesOf(clutteredGedeck(recordings, 200));
+    ros::ServiceClient client = handle.serviceClient<asr_msgs::RecognizeScenes>("recognize_scenes");
+    client.waitForExistence(ros::Duration(10));
+    bool heavy_done = false;
+    const std::size_t before = arrivals.size();
+    const ros::WallTime call_start = ros::WallTime::now();
+    std::thread caller([&] {
+      client.call(heavy);
+      heavy_call_s = (ros::WallTime::now() - call_start).toSec();
+      heavy_done = true;
+    });
+    while (!heavy_done) {
+      ros::spinOnce();
+      ros::WallDuration(0.002).sleep();
+    }
+    caller.join();
+    heavy_message = heavy.response.message;
+    heavy_instances = heavy.response.instances.size();
+    ros::WallTime previous = arrivals[before - 1];
+    for (std::size_t i = before; i < arrivals.size(); ++i) {
+      longest_gap_s = std::max(longest_gap_s, (arrivals[i] - previous).toSec());
+      previous = arrivals[i];
+    }
+    longest_gap_s = std::max(longest_gap_s, (ros::WallTime::now() - previous).toSec());
   }
   std::filesystem::remove_all(work);
 
@@ -202,6 +246,11 @@ int main(int argc, char** argv) {
       "  one tick (all ten trees on every estimate) takes %.2f ms in the library: up to "
       "%.0f Hz\n",
       tick_ms, 1000.0 / tick_ms);
+  std::printf(
+      "  during a %.2f s recognize_scenes call of 200 estimates (%zu instances%s%s), the longest "
+      "gap between two lists was %.3f s\n",
+      heavy_call_s, heavy_instances, heavy_message.empty() ? "" : ", ", heavy_message.c_str(),
+      longest_gap_s);
   std::printf("\nTargets\n");
   const bool latency_met = node_median <= 2.0 * library_median;
   const bool rate_met = achieved_hz >= 10.0;
@@ -209,5 +258,8 @@ int main(int argc, char** argv) {
               latency_met ? "met   " : "MISSED", node_median, library_median);
   std::printf("  %s  publishing rate %.2f Hz >= 10 Hz with ten scenes loaded\n",
               rate_met ? "met   " : "MISSED", achieved_hz);
+  const double period_s = 1.0 / kAskedHz;
+  std::printf("  %s  longest gap %.3f s <= 2 periods (%.3f s) during a heavy service call\n",
+              longest_gap_s <= 2.0 * period_s ? "met   " : "MISSED", longest_gap_s, 2.0 * period_s);
   return 0;
 }
