@@ -68,6 +68,16 @@ double Statement::columnDouble(int column) const {
   return sqlite3_column_double(statement_, column);
 }
 
+double Statement::columnNumber(int column, const std::string& row) const {
+  const int type = sqlite3_column_type(statement_, column);
+  if (type == SQLITE_FLOAT || type == SQLITE_INTEGER)
+    return sqlite3_column_double(statement_, column);
+  const std::string name = row + ": column " + sqlite3_column_name(statement_, column);
+  if (type == SQLITE_NULL)
+    throw InputError(name + " is missing (NULL, as SQLite stores a NaN)");
+  throw InputError(name + " is not a number ('" + columnText(column) + "')");
+}
+
 std::int64_t Statement::columnInt(int column) const {
   return sqlite3_column_int64(statement_, column);
 }

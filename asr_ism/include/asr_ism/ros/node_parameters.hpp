@@ -2,6 +2,8 @@
 
 #include <ros/node_handle.h>
 
+#include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,49 @@ T optionalParameter(const ros::NodeHandle& node, const std::string& name, const 
   T value;
   if (!node.getParam(name, value))
     throw InputError("parameter " + parameterName(node, name) + " has the wrong type");
+  return value;
+}
+
+/// An optional integer parameter in [min, max] (the one checked integer parameter reading of the
+/// suite's nodes). Throws InputError naming the parameter and the range if it is not an integer
+/// or out of range: refused, never truncated or wrapped. roscpp stores integers beyond 32 bits
+/// as doubles (`_seed:=4294967295`); a double with an integral value counts as that integer.
+inline long long integerParameter(const ros::NodeHandle& node, const std::string& name,
+                                  long long fallback, long long min, long long max) {
+  if (!node.hasParam(name))
+    return fallback;
+  const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  long long value = 0;
+  int as_int = 0;
+  double as_double = 0.0;
+  if (node.getParam(name, as_int)) {
+    value = as_int;
+  } else if (node.getParam(name, as_double) && std::isfinite(as_double) &&
+             as_double == std::floor(as_double)) {
+    if (!(as_double >= static_cast<double>(min) && as_double <= static_cast<double>(max)))
+      throw InputError("parameter " + parameterName(node, name) + " is out of range: " +
+                       std::to_string(as_double) + " is not in " + range);
+    value = static_cast<long long>(as_double);
+  } else {
+    throw InputError("parameter " + parameterName(node, name) + " must be an integer in " + range);
+  }
+  if (value < min || value > max)
+    throw InputError("parameter " + parameterName(node, name) + " is out of range: " +
+                     std::to_string(value) + " is not in " + range);
+  return value;
+}
+
+/// An optional finite number parameter in [min, max]; throws InputError naming the parameter and
+/// the range otherwise (an integer given for a number is fine).
+inline double numberParameter(const ros::NodeHandle& node, const std::string& name,
+                              double fallback, double min, double max) {
+  const double value = optionalParameter<double>(node, name, fallback);
+  if (!(std::isfinite(value) && value >= min && value <= max)) {
+    std::ostringstream message;
+    message << "parameter " << parameterName(node, name) << " is out of range: " << value
+            << " is not in [" << min << ", " << max << "]";
+    throw InputError(message.str());
+  }
   return value;
 }
 
