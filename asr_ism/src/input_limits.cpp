@@ -32,8 +32,7 @@ void checkVotingExtent(double bin_size, int height, double longest_relation,
     std::ostringstream message;
     message << what << ": votes of " << height << " levels with relations up to "
             << longest_relation << " m can land " << farthest << " m from the origin, beyond the "
-            << VotingSpace::maxCoordinate(bin_size) << " m bins of " << bin_size
-            << " m can hold";
+            << VotingSpace::maxCoordinate(bin_size) << " m bins of " << bin_size << " m can hold";
     throw InputError(message.str());
   }
 }

@@ -8,10 +8,10 @@
 
 #include <atomic>
 #include <chrono>
-#include <stdexcept>
 #include <cmath>
 #include <csignal>
 #include <functional>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 

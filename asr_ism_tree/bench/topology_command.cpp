@@ -175,8 +175,7 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
        "max-evaluations", "seed", "synthetic-max-objects", "threads"},
       {"json", "no-synthetic"});
   TopologySelectionOptions selection;
-  selection.test_count =
-      static_cast<std::size_t>(options.integer("tests", 600, 1, kMaxTestCount));
+  selection.test_count = static_cast<std::size_t>(options.integer("tests", 600, 1, kMaxTestCount));
   selection.alpha = options.number("alpha", selection.alpha);
   selection.beta = options.number("beta", selection.beta);
   // The search is told the deployment budget the table checks, as a user of RTS would tell it,

@@ -88,11 +88,13 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   if (options.has("tests-out"))
     writeTestConfigurations(options.required("tests-out"), result.tests, demonstration.objects());
 
-  writeTopologyFile(topology_out, result.topology);
+  // The model first, the topology file once the model is committed: a run that is killed or
+  // fails in between leaves the previous topology file, never one whose model was not stored.
   const IsmTree tree = generateIsmTree(demonstration, result.topology, selection.parameters);
   sqlite::saveIsmTree(
       model_path, tree,
       "demonstration " + demo_path + ", topology selected by RTS (" + topology_out + ")");
+  writeTopologyFile(topology_out, result.topology);
 
   std::printf("selected a relation topology for scene '%s' from %s\n", scene.c_str(),
               demo_path.c_str());

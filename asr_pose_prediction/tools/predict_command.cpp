@@ -28,10 +28,10 @@ std::string sourceOf(const CommandLine& options) {
 }  // namespace
 
 int runPredict(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments,
-                            {"model", "scene", "objects", "demo", "set", "samples", "seed",
-                             "instances", "object"},
-                            {"json", "summary"});
+  const CommandLine options(
+      arguments,
+      {"model", "scene", "objects", "demo", "set", "samples", "seed", "instances", "object"},
+      {"json", "summary"});
   const std::string model_path = options.required("model");
   const std::string scene = options.required("scene");
   PredictionOptions prediction_options;
@@ -48,14 +48,13 @@ int runPredict(const std::vector<std::string>& arguments) {
     prediction_options.object = tree.objects()[asr_ism_tree::cli::findObject(
         options.required("object"), tree.objects(), "--object")];
   }
-  const asr_ism::Configuration configuration =
-      asr_ism_tree::cli::loadConfiguration(options, scene);
+  const asr_ism::Configuration configuration = asr_ism_tree::cli::loadConfiguration(options, scene);
 
   const asr_ism_tree::TreeRecognizer recognizer(tree);
   std::vector<SceneInstance> instances = recognizer.recognize(configuration);
   if (instances.empty()) {
-    throw asr_ism::InputError("no instance of scene '" + scene + "' found in " +
-                              sourceOf(options) + ", so there is nothing to predict from");
+    throw asr_ism::InputError("no instance of scene '" + scene + "' found in " + sourceOf(options) +
+                              ", so there is nothing to predict from");
   }
   PredictionReport report;
   report.scene = scene;

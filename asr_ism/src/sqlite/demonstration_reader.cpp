@@ -103,10 +103,11 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
                        " is not in recorded_objects");
     }
     const std::size_t step = step_of_set.at(poses.columnInt(2));
-    const auto [earlier, first] = pose_of.emplace(std::make_pair(step, object->second),
-                                                  poses.columnInt(0));
+    const auto [earlier, first] =
+        pose_of.emplace(std::make_pair(step, object->second), poses.columnInt(0));
     if (!first) {
-      throw InputError(row + ": a second pose of " + demonstration.objects()[object->second].toString() +
+      throw InputError(row + ": a second pose of " +
+                       demonstration.objects()[object->second].toString() +
                        " in recorded_sets id " + std::to_string(poses.columnInt(2)) +
                        " (the first is recorded_poses id " + std::to_string(earlier->second) +
                        "); one object has one pose per set");

@@ -38,9 +38,8 @@ void train(const ros::NodeHandle& parameters) {
   selection.beta = numberParameter(parameters, "beta", selection.beta, 0.0, 1e6);
   checkParameter(parameters, "alpha", selection.alpha + selection.beta > 0, "> 0 if beta is 0");
   selection.max_duration_ms = numberParameter(parameters, "max_duration_ms", 0.0, 0.0, 1e6);
-  selection.max_evaluations =
-      static_cast<std::size_t>(integerParameter(parameters, "max_evaluations", 160, 2,
-                                                kMaxEvaluations));
+  selection.max_evaluations = static_cast<std::size_t>(
+      integerParameter(parameters, "max_evaluations", 160, 2, kMaxEvaluations));
   if (scenes.empty())
     scenes = asr_ism::sqlite::listRecordedScenes(demonstration_file);
 

@@ -58,22 +58,22 @@ inline long long integerParameter(const ros::NodeHandle& node, const std::string
   } else if (node.getParam(name, as_double) && std::isfinite(as_double) &&
              as_double == std::floor(as_double)) {
     if (!(as_double >= static_cast<double>(min) && as_double <= static_cast<double>(max)))
-      throw InputError("parameter " + parameterName(node, name) + " is out of range: " +
-                       std::to_string(as_double) + " is not in " + range);
+      throw InputError("parameter " + parameterName(node, name) +
+                       " is out of range: " + std::to_string(as_double) + " is not in " + range);
     value = static_cast<long long>(as_double);
   } else {
     throw InputError("parameter " + parameterName(node, name) + " must be an integer in " + range);
   }
   if (value < min || value > max)
-    throw InputError("parameter " + parameterName(node, name) + " is out of range: " +
-                     std::to_string(value) + " is not in " + range);
+    throw InputError("parameter " + parameterName(node, name) +
+                     " is out of range: " + std::to_string(value) + " is not in " + range);
   return value;
 }
 
 /// An optional finite number parameter in [min, max]; throws InputError naming the parameter and
 /// the range otherwise (an integer given for a number is fine).
-inline double numberParameter(const ros::NodeHandle& node, const std::string& name,
-                              double fallback, double min, double max) {
+inline double numberParameter(const ros::NodeHandle& node, const std::string& name, double fallback,
+                              double min, double max) {
   const double value = optionalParameter<double>(node, name, fallback);
   if (!(std::isfinite(value) && value >= min && value <= max)) {
     std::ostringstream message;
