@@ -10,6 +10,7 @@
 #include <std_msgs/UInt32.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <memory>
 
@@ -157,6 +158,34 @@ TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesWithinTwoPeriods) {
   EXPECT_LE((found - published).toSec(), 2.0 / kRate);
 }
 
+TEST_F(SceneRecognizerNodeTest, AFarEstimateInContinuousModeIsRejectedAndRecognitionGoesOn) {
+  // One finite estimate 1e5 m from the origin used to end the node inside its timer callback.
+  std::uint32_t rejected = 0;
+  ros::Subscriber counter = handle_.subscribe<std_msgs::UInt32>(
+      "scene_recognizer/rejected_estimates", 10,
+      [&](const std_msgs::UInt32::ConstPtr& count) { rejected = count->data; });
+  bool recognised = false;
+  ros::Subscriber instances = handle_.subscribe<asr_msgs::SceneInstanceList>(
+      "scene_instances", 10, [&](const asr_msgs::SceneInstanceList::ConstPtr& list) {
+        recognised = recognised || (rejected >= 1 && !list->instances.empty() &&
+                                    list->instances[0].confidence >= 0.99);
+      });
+  ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
+  ASSERT_TRUE(waitFor(
+      [&] { return objects.getNumSubscribers() > 0 && instances.getNumPublishers() > 0; }, 30));
+  asr_msgs::ObjectEstimateList list;
+  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(12))
+    list.objects.push_back(estimateMessage(estimate));
+  asr_msgs::ObjectEstimate far = list.objects[0];
+  far.instance_id = "far";
+  far.pose.pose.position.x = 1e5;
+  list.objects.push_back(far);
+  objects.publish(list);
+  EXPECT_TRUE(waitFor([&] { return recognised; }, 10)) << rejected << " rejected";
+  EXPECT_EQ(rejected, 1u);
+  EXPECT_TRUE(node_->running());
+}
+
 TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
   ros::ServiceClient reload = handle_.serviceClient<asr_msgs::ReloadModel>("reload_model");
   asr_msgs::ReloadModel broken;
@@ -193,6 +222,26 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
     if (std::string(topology) == "star")
       EXPECT_EQ(tree.isms.size(), 1u);
   }
+  // Numbers out of range are refused, not wrapped: -1 used to become seed 4294967295, and a
+  // seed beyond 32 bits (stored by roscpp as a double) or 10^9 tests would have run.
+  int refused = 0;
+  for (const char* parameter : {"_seed:=-1", "_seed:=4294967303", "_tests:=1000000000",
+                                "_max_evaluations:=1", "_alpha:=nan"}) {
+    NodeProcess out_of_range(
+        std::string(ASR_NODE_DIR) + "/trainer",
+        {"__name:=trainer_range_" + std::to_string(refused++),
+         "_demonstration_file:=" + asr_ism::testing::recording("story_2.sqlite"),
+         "_model_file:=" + dir.file("refused.sqlite"), "_scenes:=Getraenke_Regal",
+         "_topology:=star", parameter});
+    EXPECT_EQ(out_of_range.waitForExit(std::chrono::seconds(30)), 1) << parameter;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("refused.sqlite")));
+  NodeProcess largest_seed(std::string(ASR_NODE_DIR) + "/trainer",
+                           {"__name:=trainer_largest_seed",
+                            "_demonstration_file:=" + asr_ism::testing::recording("story_2.sqlite"),
+                            "_model_file:=" + dir.file("largest_seed.sqlite"),
+                            "_scenes:=Getraenke_Regal", "_topology:=star", "_seed:=4294967295"});
+  EXPECT_EQ(largest_seed.waitForExit(std::chrono::seconds(60)), 0);
   NodeProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
                   {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
                    "_model_file:=" + model, "_topology:=star"});

@@ -3,6 +3,7 @@
 #include <ros/node_handle.h>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -44,30 +45,33 @@ T optionalParameter(const ros::NodeHandle& node, const std::string& name, const 
 /// An optional integer parameter in [min, max] (the one checked integer parameter reading of the
 /// suite's nodes). Throws InputError naming the parameter and the range if it is not an integer
 /// or out of range: refused, never truncated or wrapped. roscpp stores integers beyond 32 bits
-/// as doubles (`_seed:=4294967295`); a double with an integral value counts as that integer.
+/// as doubles (`_seed:=4294967295`), and its getParam(int) would cast those; a double with an
+/// integral value counts as that integer here.
 inline long long integerParameter(const ros::NodeHandle& node, const std::string& name,
                                   long long fallback, long long min, long long max) {
   if (!node.hasParam(name))
     return fallback;
   const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
-  long long value = 0;
-  int as_int = 0;
-  double as_double = 0.0;
-  if (node.getParam(name, as_int)) {
-    value = as_int;
-  } else if (node.getParam(name, as_double) && std::isfinite(as_double) &&
-             as_double == std::floor(as_double)) {
-    if (!(as_double >= static_cast<double>(min) && as_double <= static_cast<double>(max)))
-      throw InputError("parameter " + parameterName(node, name) +
-                       " is out of range: " + std::to_string(as_double) + " is not in " + range);
-    value = static_cast<long long>(as_double);
-  } else {
+  XmlRpc::XmlRpcValue stored;
+  node.getParam(name, stored);
+  double value = 0.0;
+  if (stored.getType() == XmlRpc::XmlRpcValue::TypeInt)
+    value = static_cast<int>(stored);
+  else if (stored.getType() == XmlRpc::XmlRpcValue::TypeDouble)
+    value = static_cast<double>(stored);
+  if (!(stored.getType() == XmlRpc::XmlRpcValue::TypeInt ||
+        (stored.getType() == XmlRpc::XmlRpcValue::TypeDouble && std::isfinite(value) &&
+         value == std::floor(value)))) {
     throw InputError("parameter " + parameterName(node, name) + " must be an integer in " + range);
   }
-  if (value < min || value > max)
-    throw InputError("parameter " + parameterName(node, name) +
-                     " is out of range: " + std::to_string(value) + " is not in " + range);
-  return value;
+  // Every long long limit used here is below 2^53, so the comparison in double is exact.
+  if (!(value >= static_cast<double>(min) && value <= static_cast<double>(max))) {
+    std::ostringstream message;
+    message << std::setprecision(17) << "parameter " << parameterName(node, name)
+            << " is out of range: " << value << " is not in " << range;
+    throw InputError(message.str());
+  }
+  return static_cast<long long>(value);
 }
 
 /// An optional finite number parameter in [min, max]; throws InputError naming the parameter and
