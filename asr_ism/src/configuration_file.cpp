@@ -11,7 +11,8 @@
 #include <set>
 #include <sstream>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/atomic_file.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism {
 namespace {
@@ -164,19 +165,7 @@ void writeConfigurationFile(const std::string& path, const Configuration& config
          << "      orientation: {x: " << pose.orientation.x() << ", y: " << pose.orientation.y()
          << ", z: " << pose.orientation.z() << ", w: " << pose.orientation.w() << "}\n";
   }
-  const std::string temporary = path + ".tmp";
-  bool written = false;
-  {
-    std::ofstream file(temporary, std::ios::trunc);
-    file << text.str();
-    file.close();
-    written = !file.fail();
-  }
-  // A failed write (e.g. a full disk) must not leave its partial temporary file behind either.
-  if (!written || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw InputError(path + ": cannot write");
-  }
+  asr_common::writeFileAtomically(path, text.str());
 }
 
 }  // namespace asr_ism

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism {
 

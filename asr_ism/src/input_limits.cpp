@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/voting_space.hpp"
 
 namespace asr_ism {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/input_limits.hpp"
 
 namespace asr_ism {

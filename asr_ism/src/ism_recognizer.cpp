@@ -8,8 +8,8 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/compliance.hpp"
-#include "asr_ism/input_error.hpp"
 #include "asr_ism/voting_space.hpp"
 
 namespace asr_ism {

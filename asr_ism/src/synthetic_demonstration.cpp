@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/portable_random.hpp"
 
 namespace asr_ism {

@@ -13,16 +13,16 @@
 #include <string>
 #include <vector>
 
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 
 namespace asr_ism {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::fileBytes;
-using testing::inputErrorOf;
-using testing::TempDir;
+using asr_common::testing::fileBytes;
+using asr_common::testing::inputErrorOf;
+using asr_common::testing::TempDir;
 
 constexpr char kPrefix[] = "asr_configuration_file";
 

@@ -8,21 +8,21 @@
 #include <limits>
 #include <map>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism::sqlite {
 namespace {
 
 namespace fs = std::filesystem;
 
-using testing::inputErrorOf;
-using testing::recording;
-using testing::recordings;
-using testing::TempDir;
+using asr_common::testing::inputErrorOf;
+using asr_common::testing::recording;
+using asr_common::testing::recordings;
+using asr_common::testing::TempDir;
 
 TEST(DemonstrationReader, ListsTheScenesOfEachRecordingInIdOrder) {
   REQUIRE_RECORDINGS();

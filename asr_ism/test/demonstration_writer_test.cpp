@@ -11,25 +11,25 @@
 #include <random>
 #include <set>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
 #include "asr_ism/testing/sqlite_dump.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism::sqlite {
 namespace {
 
 namespace fs = std::filesystem;
 
+using asr_common::testing::fileBytes;
+using asr_common::testing::inputErrorOf;
+using asr_common::testing::recording;
+using asr_common::testing::TempDir;
 using testing::Dump;
 using testing::dumpFile;
-using testing::fileBytes;
-using testing::inputErrorOf;
-using testing::recording;
-using testing::TempDir;
 
 // Old rows are all still there (a changed row would be missing), and `added` rows are new.
 void expectRowsKept(const Dump& before, const Dump& after,

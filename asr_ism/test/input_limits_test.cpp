@@ -10,13 +10,13 @@
 #include <random>
 
 #include "asr_ism/ism_learning.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
+#include "asr_common/testing/input_error_of.hpp"
 #include "asr_ism/voting_space.hpp"
 
 namespace asr_ism {
 namespace {
 
-using testing::inputErrorOf;
+using asr_common::testing::inputErrorOf;
 
 Pose at(double x, double y, double z) {
   return Pose(Eigen::Vector3d(x, y, z), Eigen::Quaterniond::Identity());

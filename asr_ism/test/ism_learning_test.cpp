@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "asr_ism/testing/input_error_of.hpp"
+#include "asr_common/testing/input_error_of.hpp"
 
 namespace asr_ism {
 namespace {
@@ -14,7 +14,7 @@ Pose makePose(double x, double y, double z, double angle, const Eigen::Vector3d&
   return Pose(Eigen::Vector3d(x, y, z), Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)));
 }
 
-using testing::inputErrorOf;
+using asr_common::testing::inputErrorOf;
 
 const ObjectKey kReference{"Plate", "1"};
 const ObjectKey kCup{"Cup", "7"};

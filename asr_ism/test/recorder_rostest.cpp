@@ -11,21 +11,21 @@
 #include <limits>
 #include <memory>
 
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/child_process.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/rostest_support.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/node_process.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/rostest_support.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism {
 namespace {
 
-using testing::NodeProcess;
-using testing::TempDir;
-using testing::waitFor;
+using asr_common::ChildProcess;
+using asr_common::testing::TempDir;
+using asr_common::testing::waitFor;
 
 std::string node(const std::string& name) {
   return std::string(ASR_NODE_DIR) + "/" + name;
@@ -43,7 +43,7 @@ struct Counter {
 class RecorderNodeTest : public ::testing::Test {
  protected:
   void startRecorder(const std::string& mode) {
-    recorder_ = std::make_unique<NodeProcess>(
+    recorder_ = std::make_unique<ChildProcess>(
         node("recorder"),
         std::vector<std::string>{"__name:=recorder", "_demonstration_file:=" + output_,
                                  "_scene:=Getraenke_Regal", "_mode:=" + mode});
@@ -55,12 +55,12 @@ class RecorderNodeTest : public ::testing::Test {
   TempDir dir_{"asr_recorder_rostest"};
   std::string output_ = dir_.file("recorded.sqlite");
   ros::NodeHandle handle_;
-  std::unique_ptr<NodeProcess> recorder_;
+  std::unique_ptr<ChildProcess> recorder_;
 };
 
 TEST_F(RecorderNodeTest, AReplayedRecordingIsRecordedSetForSetAndTheFileKeepsItsRows) {
   REQUIRE_RECORDINGS();
-  const std::string source = testing::recording("story_2.sqlite");
+  const std::string source = asr_common::testing::recording("story_2.sqlite");
   const Demonstration original = sqlite::readDemonstration(source, "Getraenke_Regal");
   // Something the user recorded before: it must survive.
   const Demonstration earlier = makeSyntheticDemonstration(3, 4, 1, "earlier");
@@ -68,7 +68,7 @@ TEST_F(RecorderNodeTest, AReplayedRecordingIsRecordedSetForSetAndTheFileKeepsIts
 
   startRecorder("message");
   Counter recorded(handle_, "recorder/recorded_sets");
-  NodeProcess replay(
+  ChildProcess replay(
       node("replay_demonstration"),
       {"__name:=replay", "_demonstration_file:=" + source, "_scene:=Getraenke_Regal", "_rate:=40"});
   ASSERT_TRUE(waitFor([&] { return recorded.value == original.stepCount(); }, 90))
@@ -107,16 +107,16 @@ TEST_F(RecorderNodeTest, MalformedEstimatesAreRejectedCountedAndRecordingGoesOn)
   header.stamp = ros::Time::now();
   const ObjectEstimate valid{{"Cup", "0"},
                              Pose(Eigen::Vector3d(1, 2, 0.8), Eigen::Quaterniond::Identity())};
-  asr_msgs::ObjectEstimate nan = ros_interface::toEstimateMessage(valid, header);
+  asr_msgs::ObjectEstimate nan = asr_common::ros_interface::toEstimateMessage(valid, header);
   nan.type = "Plate";
   nan.pose.pose.position.y = std::numeric_limits<double>::quiet_NaN();
-  asr_msgs::ObjectEstimate zero = ros_interface::toEstimateMessage(valid, header);
+  asr_msgs::ObjectEstimate zero = asr_common::ros_interface::toEstimateMessage(valid, header);
   zero.type = "Knife";
   zero.pose.pose.orientation.w = 0.0;
-  asr_msgs::ObjectEstimate empty = ros_interface::toEstimateMessage(valid, header);
+  asr_msgs::ObjectEstimate empty = asr_common::ros_interface::toEstimateMessage(valid, header);
   empty.type = "";
   asr_msgs::ObjectEstimateList list;
-  list.objects = {nan, zero, empty, ros_interface::toEstimateMessage(valid, header)};
+  list.objects = {nan, zero, empty, asr_common::ros_interface::toEstimateMessage(valid, header)};
   objects.publish(list);
   ASSERT_TRUE(waitFor([&] { return rejected.value == 3 && recorded.value == 1; }, 10))
       << rejected.value << " rejected, " << recorded.value << " recorded";
@@ -127,7 +127,7 @@ TEST_F(RecorderNodeTest, MalformedEstimatesAreRejectedCountedAndRecordingGoesOn)
       handle_.serviceClient<asr_msgs::RecordConfiguration>("record_configuration");
   asr_msgs::RecordConfiguration service;
   service.request.scene = "by_service";
-  service.request.objects = {ros_interface::toEstimateMessage(valid, header)};
+  service.request.objects = {asr_common::ros_interface::toEstimateMessage(valid, header)};
   ASSERT_TRUE(client.call(service));
   EXPECT_TRUE(service.response.success) << service.response.message;
   EXPECT_EQ(service.response.object_count, 1u);
@@ -137,7 +137,7 @@ TEST_F(RecorderNodeTest, MalformedEstimatesAreRejectedCountedAndRecordingGoesOn)
 }
 
 TEST_F(RecorderNodeTest, AMissingParameterStopsTheNodeWithAnError) {
-  NodeProcess bad(node("recorder"), {"__name:=bad_recorder", "_scene:=x"});
+  ChildProcess bad(node("recorder"), {"__name:=bad_recorder", "_scene:=x"});
   EXPECT_EQ(bad.waitForExit(std::chrono::seconds(20)), 1);
 }
 
@@ -145,5 +145,5 @@ TEST_F(RecorderNodeTest, AMissingParameterStopsTheNodeWithAnError) {
 }  // namespace asr_ism
 
 int main(int argc, char** argv) {
-  return asr_ism::testing::runRostests(argc, argv, "recorder_rostest");
+  return asr_common::testing::runRostests(argc, argv, "recorder_rostest");
 }

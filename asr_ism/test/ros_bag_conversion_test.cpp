@@ -8,17 +8,19 @@
 
 #include <limits>
 
+#include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/ros/bag_conversion.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism::ros_interface {
+
+using asr_common::ros_interface::toEstimateMessage;
 namespace {
 
-using testing::inputErrorOf;
+using asr_common::testing::inputErrorOf;
 
 class BagConversionTest : public ::testing::Test {
  protected:
@@ -62,7 +64,7 @@ class BagConversionTest : public ::testing::Test {
     bag.close();
   }
 
-  testing::TempDir dir_{"asr_bag_conversion"};
+  asr_common::testing::TempDir dir_{"asr_bag_conversion"};
   std::string bag_ = dir_.file("demo.bag");
   Demonstration demonstration_ = makeSyntheticDemonstration(3, 5, 2, "tray");
   Pose camera_in_map_;

@@ -4,12 +4,16 @@
 
 #include <cmath>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/ros/callback_guard.hpp"
+#include "asr_common/ros/callback_guard.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/ros/estimate_intake.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
 
 namespace asr_ism::ros_interface {
+
+using asr_common::ros_interface::fromEstimateMessage;
+using asr_common::ros_interface::guardCallback;
+using asr_common::ros_interface::toEstimateMessage;
 namespace {
 
 asr_msgs::ObjectEstimate cupIn(const std::string& frame) {

@@ -13,13 +13,13 @@
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 
 namespace asr_ism::sqlite {
 namespace {
 
-using testing::TempDir;
+using asr_common::testing::TempDir;
 
 // In a child process: opens `path`, changes every pose inside a transaction with a cache too
 // small to hold the change (so pages reach the file before the commit), and dies by SIGKILL
@@ -73,7 +73,7 @@ TEST(SqliteDatabase, ANonDatabaseIsNamedAsSuch) {
   TempDir dir("asr_sqlite_database");
   const std::string path = dir.write("text.sqlite", "this is not a database, just some text\n");
   const std::string message =
-      testing::inputErrorOf([&] { Database(path, Database::Mode::kReadOnly); });
+      asr_common::testing::inputErrorOf([&] { Database(path, Database::Mode::kReadOnly); });
   EXPECT_NE(message.find(path + ": not an SQLite database"), std::string::npos) << message;
 }
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/ism_learning.hpp"
 #include "asr_ism/ism_recognizer.hpp"
 

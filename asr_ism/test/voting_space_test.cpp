@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism {
 namespace {

@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/ros/bag_conversion.hpp"
 
 namespace {
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     for (const auto& [reason, count] : conversion.rejected_by_reason)
       std::cout << " (" << count << " " << reason << ")";
     std::cout << "\n";
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     std::cerr << "bag_to_demonstration: " << error.what() << "\n";
     return 1;
   }

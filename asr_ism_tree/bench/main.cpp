@@ -1,5 +1,5 @@
 // `asr_bench <benchmark> ...`: performance benchmarks of the ISM tree engine.
-#include "asr_ism_tree/cli/command_main.hpp"
+#include "asr_common/cli/command_main.hpp"
 #include "recognition_command.hpp"
 #include "topology_command.hpp"
 
@@ -18,7 +18,7 @@ const char* const kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
-  return asr_ism_tree::cli::runCommandMain(
+  return asr_common::cli::runCommandMain(
       "asr_bench", kUsage,
       {{"recognition", asr_ism_tree::bench::runRecognitionCommand},
        {"topology", asr_ism_tree::bench::runTopologyCommand}},

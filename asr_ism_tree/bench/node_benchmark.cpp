@@ -7,9 +7,6 @@
 #include <asr_msgs/RecognizeScenes.h>
 #include <asr_msgs/SceneInstanceList.h>
 #include <ros/ros.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <chrono>
@@ -18,17 +15,16 @@
 #include <string>
 #include <vector>
 
-#include "asr_ism/recordings.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/child_process.hpp"
+#include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/cli/timing.hpp"
+#include "asr_common/recordings.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
-#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/scene_models.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
-
-extern char** environ;
 
 namespace {
 
@@ -38,34 +34,13 @@ constexpr int kRepetitions = 5;       // per set; the fastest counts, as in asr_
 constexpr double kRateWindow = 10.0;  // s of publishing to average the rate over
 constexpr int kAskedHz = 20;          // the node's rate: twice the target, to show the headroom
 
-// A node started for the benchmark and stopped (SIGINT) when it goes.
-class Node {
- public:
-  Node(const std::string& executable, std::vector<std::string> arguments) {
-    arguments.insert(arguments.begin(), executable);
-    std::vector<char*> argv;
-    for (std::string& argument : arguments)
-      argv.push_back(argument.data());
-    argv.push_back(nullptr);
-    if (::posix_spawn(&pid_, executable.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-      throw std::runtime_error("cannot start " + executable);
-  }
-  ~Node() {
-    ::kill(pid_, SIGINT);
-    ::waitpid(pid_, nullptr, 0);
-  }
-
- private:
-  pid_t pid_ = -1;
-};
-
-std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_ism::Configuration& configuration) {
+std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_common::Configuration& configuration) {
   std_msgs::Header header;
   header.frame_id = "map";
   header.stamp = ros::Time::now();
   std::vector<asr_msgs::ObjectEstimate> messages;
-  for (const asr_ism::ObjectEstimate& estimate : configuration)
-    messages.push_back(asr_ism::ros_interface::toEstimateMessage(estimate, header));
+  for (const asr_common::ObjectEstimate& estimate : configuration)
+    messages.push_back(asr_common::ros_interface::toEstimateMessage(estimate, header));
   return messages;
 }
 
@@ -73,7 +48,7 @@ std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_ism::Configuration& c
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "asr_node_bench", ros::init_options::AnonymousName);
-  const std::string recordings = asr_ism::recordingsDirectory(ASR_RECORDINGS_DIR);
+  const std::string recordings = asr_common::recordingsDirectory(ASR_RECORDINGS_DIR);
   if (recordings.empty()) {
     std::fprintf(
         stderr,
@@ -96,8 +71,9 @@ int main(int argc, char** argv) {
   std::vector<double> library_ms;
   std::vector<double> node_ms;
   {
-    Node node(nodes + "/scene_recognizer",
-              {"__name:=bench_recognizer", "_model_files:=" + gedeck_model, "_continuous:=false"});
+    asr_common::ChildProcess node(
+        nodes + "/scene_recognizer",
+        {"__name:=bench_recognizer", "_model_files:=" + gedeck_model, "_continuous:=false"});
     if (!ros::service::waitForService("recognize_scenes", ros::Duration(30))) {
       std::fprintf(stderr, "asr_node_bench: the scene_recognizer did not start\n");
       return 1;
@@ -106,17 +82,18 @@ int main(int argc, char** argv) {
     ros::ServiceClient client =
         handle.serviceClient<asr_msgs::RecognizeScenes>("recognize_scenes", true);
     for (std::size_t set = 0; set < gedeck.stepCount(); ++set) {
-      const asr_ism::Configuration configuration = gedeck.configuration(set);
+      const asr_common::Configuration configuration = gedeck.configuration(set);
       double best_library = 1e9;
       double best_node = 1e9;
       for (int repetition = 0; repetition < kRepetitions; ++repetition) {
-        best_library = std::min(best_library,
-                                cli::millisecondsOf([&] { recognizer.recognize(configuration); }));
+        best_library =
+            std::min(best_library,
+                     asr_common::cli::millisecondsOf([&] { recognizer.recognize(configuration); }));
         asr_msgs::RecognizeScenes service;
         service.request.objects = messagesOf(configuration);
         bool answered = false;
-        best_node =
-            std::min(best_node, cli::millisecondsOf([&] { answered = client.call(service); }));
+        best_node = std::min(
+            best_node, asr_common::cli::millisecondsOf([&] { answered = client.call(service); }));
         if (!answered || service.response.instances.empty()) {
           std::fprintf(stderr, "asr_node_bench: the service call for set %zu failed\n", set);
           return 1;
@@ -126,12 +103,12 @@ int main(int argc, char** argv) {
       node_ms.push_back(best_node);
     }
   }
-  const double library_median = cli::median(library_ms);
-  const double node_median = cli::median(node_ms);
+  const double library_median = asr_common::cli::median(library_ms);
+  const double node_median = asr_common::cli::median(node_ms);
 
   // (2) Publishing rate with the ten kitchen scenes, complete topologies.
   std::vector<std::string> model_files;
-  for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+  for (const asr_common::cli::KitchenScene& kitchen : asr_common::cli::kitchenScenes()) {
     const asr_ism::Demonstration demonstration =
         asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene);
     const std::string model = (work / (std::string(kitchen.scene) + ".sqlite")).string();
@@ -145,13 +122,13 @@ int main(int argc, char** argv) {
   double tick_ms = 0.0;
   {
     const SceneModels models = SceneModels::load(model_files);
-    asr_ism::Configuration everything;
-    for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+    asr_common::Configuration everything;
+    for (const asr_common::cli::KitchenScene& kitchen : asr_common::cli::kitchenScenes()) {
       const auto configuration =
           asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene)
               .configuration(0);
       // One estimate per object, as the node keeps: scenes share objects.
-      for (const asr_ism::ObjectEstimate& estimate : configuration) {
+      for (const asr_common::ObjectEstimate& estimate : configuration) {
         if (std::none_of(everything.begin(), everything.end(),
                          [&](const auto& kept) { return kept.key == estimate.key; }))
           everything.push_back(estimate);
@@ -159,14 +136,15 @@ int main(int argc, char** argv) {
     }
     tick_ms = 1e9;
     for (int repetition = 0; repetition < kRepetitions; ++repetition)
-      tick_ms = std::min(tick_ms, cli::millisecondsOf([&] { models.recognize(everything); }));
+      tick_ms =
+          std::min(tick_ms, asr_common::cli::millisecondsOf([&] { models.recognize(everything); }));
   }
   double achieved_hz = 0.0;
   std::size_t instances_seen = 0;
   {
     // A list parameter cannot be given on a command line: set it before the node starts.
     handle.setParam("/bench_continuous/model_files", model_files);
-    Node node(
+    asr_common::ChildProcess node(
         nodes + "/scene_recognizer",
         {"__name:=bench_continuous", "_rate:=" + std::to_string(kAskedHz), "_estimate_timeout:=0"});
     ros::Publisher objects = handle.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
@@ -186,7 +164,7 @@ int main(int argc, char** argv) {
     }
     // Every object of every kitchen scene's first set at once: all ten trees have work to do.
     asr_msgs::ObjectEstimateList list;
-    for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+    for (const asr_common::cli::KitchenScene& kitchen : asr_common::cli::kitchenScenes()) {
       const auto configuration =
           asr_ism::sqlite::readDemonstration(recordings + "/" + kitchen.file, kitchen.scene)
               .configuration(0);

@@ -3,18 +3,18 @@
 #include <memory>
 #include <ostream>
 
+#include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/cli/timing.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/thread_pool.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
-#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "tree_measurement.hpp"
 
 namespace asr_ism_tree::bench {
 
-using cli::evenlySpaced;
-using cli::maximum;
-using cli::median;
+using asr_common::cli::evenlySpaced;
+using asr_common::cli::maximum;
+using asr_common::cli::median;
 namespace {
 
 SceneRow measure(const asr_ism::Demonstration& demonstration, const std::string& topology_name,
@@ -32,7 +32,7 @@ SceneRow measure(const asr_ism::Demonstration& demonstration, const std::string&
   row.height = learned.tree.height();
   row.votes = learned.tree.relativePoseCount();
 
-  std::vector<asr_ism::Configuration> sets;
+  std::vector<asr_common::Configuration> sets;
   for (std::size_t step = 0; step < demonstration.stepCount(); ++step)
     sets.push_back(demonstration.configuration(step));
   const TreeRecognizer recognizer(learned.tree, TreeRecognitionParameters{}, pool);
@@ -42,7 +42,7 @@ SceneRow measure(const asr_ism::Demonstration& demonstration, const std::string&
   row.passes = timing.passes;
   row.recognised_fraction = recognisedFraction(timing.best_confidence);
 
-  std::vector<asr_ism::Configuration> sampled;
+  std::vector<asr_common::Configuration> sampled;
   const std::size_t sample_size =
       settings.missing_one_sets == 0 ? sets.size() : settings.missing_one_sets;
   for (std::size_t step : evenlySpaced(sets.size(), sample_size))
@@ -61,7 +61,7 @@ std::vector<SceneRow> benchmarkKitchenScenes(const std::string& recordings,
   if (settings.threads > 1)
     pool = std::make_unique<asr_ism::ThreadPool>(settings.threads);
   std::vector<SceneRow> rows;
-  for (const cli::KitchenScene& kitchen_scene : cli::kitchenScenes()) {
+  for (const asr_common::cli::KitchenScene& kitchen_scene : asr_common::cli::kitchenScenes()) {
     const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
         recordings + "/" + kitchen_scene.file, kitchen_scene.scene);
     const std::size_t center = chooseStarCenter(demonstration);

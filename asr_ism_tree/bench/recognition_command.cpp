@@ -3,9 +3,9 @@
 #include <fstream>
 #include <iostream>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism_tree/topology_selection/topology_selection.hpp"
 #include "recognition_benchmark.hpp"
 #include "report.hpp"
@@ -15,14 +15,14 @@
 namespace asr_ism_tree::bench {
 namespace {
 
-using cli::CommandLine;
-using cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json) {
   std::ofstream file(path, std::ios::trunc);
   file << json.dump(2) << "\n";
   if (!file.flush())
-    throw asr_ism::InputError(path + ": cannot write the synthetic results");
+    throw asr_common::InputError(path + ": cannot write the synthetic results");
 }
 
 }  // namespace
@@ -39,8 +39,8 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   std::ostream& progress = std::cerr;
 
   std::vector<SceneRow> scene_rows;
-  if (const auto recordings =
-          cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress)) {
+  if (const auto recordings = asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR,
+                                                                   "asr_bench", progress)) {
     progress << "kitchen scenes from " << *recordings << "\n";
     scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
   }

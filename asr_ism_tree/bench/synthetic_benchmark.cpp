@@ -3,16 +3,16 @@
 #include <memory>
 #include <ostream>
 
+#include "asr_common/cli/timing.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
 #include "asr_ism/thread_pool.hpp"
-#include "asr_ism_tree/cli/timing.hpp"
 #include "tree_measurement.hpp"
 
 namespace asr_ism_tree::bench {
 
-using cli::evenlySpaced;
-using cli::maximum;
-using cli::median;
+using asr_common::cli::evenlySpaced;
+using asr_common::cli::maximum;
+using asr_common::cli::median;
 
 std::vector<std::size_t> syntheticObjectCounts() {
   return {2, 3, 4, 5, 6, 7, 8, 9, 10};
@@ -44,7 +44,7 @@ std::vector<SyntheticRow> benchmarkSyntheticScaling(const BenchmarkSettings& set
       row.height = learned.tree.height();
       row.votes = learned.tree.relativePoseCount();
 
-      std::vector<asr_ism::Configuration> sampled;
+      std::vector<asr_common::Configuration> sampled;
       for (std::size_t step : evenlySpaced(steps, settings.synthetic_configurations))
         sampled.push_back(demonstration.configuration(step));
       const TreeRecognizer recognizer(learned.tree, TreeRecognitionParameters{}, pool.get());

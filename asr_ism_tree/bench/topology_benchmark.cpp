@@ -4,9 +4,9 @@
 #include <chrono>
 #include <ostream>
 
+#include "asr_common/cli/recordings_folder.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
 #include "synthetic_benchmark.hpp"
 
 namespace asr_ism_tree::bench {
@@ -44,7 +44,7 @@ std::vector<TopologyTableRow> benchmarkTopologies(const std::string& recordings,
                                                   const TopologySelectionOptions& options,
                                                   std::ostream& progress) {
   std::vector<TopologyTableRow> rows;
-  for (const cli::KitchenScene& kitchen : cli::kitchenScenes()) {
+  for (const asr_common::cli::KitchenScene& kitchen : asr_common::cli::kitchenScenes()) {
     if (!scenes.empty() && std::find(scenes.begin(), scenes.end(), kitchen.scene) == scenes.end())
       continue;
     progress << "  " << kitchen.scene << ": " << std::flush;

@@ -8,18 +8,19 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
-#include "asr_ism_tree/cli/line_plot.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
+#include "asr_common/atomic_file.hpp"
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/cli/line_plot.hpp"
+#include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/input_error.hpp"
 #include "synthetic_benchmark.hpp"
 #include "topology_benchmark.hpp"
 
 namespace asr_ism_tree::bench {
 namespace {
 
-using cli::CommandLine;
-using cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 constexpr double kMaxOptimisedMs = 2.0;
 constexpr double kMaxTableSeconds = 20 * 60;
@@ -38,18 +39,6 @@ std::vector<std::string> splitCommas(const std::string& text) {
       parts.push_back(part);
   }
   return parts;
-}
-
-// Writes `content` to `path` whole (temporary file + rename).
-void writeFile(const std::string& path, const std::string& content) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream file(temporary);
-    file << content;
-    if (!file)
-      throw asr_ism::InputError("cannot write " + temporary);
-  }
-  std::filesystem::rename(temporary, path);
 }
 
 std::string markdownTable(const std::vector<TopologyTableRow>& rows) {
@@ -147,13 +136,13 @@ nlohmann::ordered_json rowsToJson(const std::vector<TopologyTableRow>& rows) {
 }
 
 void plotRuntimes(const std::vector<TopologyRuntimePoint>& points, const std::string& path) {
-  cli::LinePlot plot;
+  asr_common::cli::LinePlot plot;
   plot.title = "Recognition with ISM trees of optimised topologies (synthetic scenes)";
   plot.x_label = "objects in the scene";
   plot.y_label = "mean recognition time [ms]";
   int colour = 1;
   for (std::size_t steps : syntheticStepCounts()) {
-    cli::PlotCurve curve;
+    asr_common::cli::PlotCurve curve;
     curve.title = std::to_string(steps) + " steps";
     curve.colour = colour++;
     for (const TopologyRuntimePoint& point : points) {
@@ -163,7 +152,7 @@ void plotRuntimes(const std::vector<TopologyRuntimePoint>& points, const std::st
     if (!curve.points.empty())
       plot.curves.push_back(std::move(curve));
   }
-  cli::drawLinePlot(plot, path);
+  asr_common::cli::drawLinePlot(plot, path);
 }
 
 }  // namespace
@@ -196,8 +185,8 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
   const auto start = std::chrono::steady_clock::now();
 
   std::vector<TopologyTableRow> rows;
-  if (const auto recordings =
-          cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress)) {
+  if (const auto recordings = asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR,
+                                                                   "asr_bench", progress)) {
     progress << "relation topology selection for the kitchen scenes of " << *recordings << "\n";
     rows = benchmarkTopologies(*recordings, splitCommas(options.optional("scenes", "")), selection,
                                progress);
@@ -215,8 +204,8 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  writeFile(out_dir + "/topology_table.md", markdownTable(rows));
-  writeFile(out_dir + "/topology_table.csv", csvTable(rows));
+  asr_common::writeFileAtomically(out_dir + "/topology_table.md", markdownTable(rows));
+  asr_common::writeFileAtomically(out_dir + "/topology_table.csv", csvTable(rows));
   if (!points.empty())
     plotRuntimes(points, out_dir + "/topology_runtime.png");
 

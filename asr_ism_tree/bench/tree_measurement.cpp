@@ -7,13 +7,13 @@
 #include <limits>
 #include <string>
 
-#include "asr_ism_tree/cli/timing.hpp"
+#include "asr_common/cli/timing.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 
 namespace asr_ism_tree::bench {
 
-using cli::millisecondsOf;
+using asr_common::cli::millisecondsOf;
 namespace {
 
 constexpr double kRecognisedConfidence = 0.99;
@@ -62,7 +62,7 @@ LearnedTree learnAndStore(const asr_ism::Demonstration& demonstration,
 }
 
 RecognitionTiming timeRecognition(const TreeRecognizer& recognizer,
-                                  const std::vector<asr_ism::Configuration>& configurations,
+                                  const std::vector<asr_common::Configuration>& configurations,
                                   const BenchmarkSettings& settings) {
   RecognitionTiming timing;
   timing.milliseconds.assign(configurations.size(), std::numeric_limits<double>::infinity());
@@ -99,12 +99,12 @@ double recognisedFraction(const std::vector<double>& confidences) {
 }
 
 double meanConfidenceWithOneLeftOut(const TreeRecognizer& recognizer,
-                                    const std::vector<asr_ism::Configuration>& configurations) {
+                                    const std::vector<asr_common::Configuration>& configurations) {
   double sum = 0.0;
   std::size_t count = 0;
-  for (const asr_ism::Configuration& configuration : configurations) {
+  for (const asr_common::Configuration& configuration : configurations) {
     for (std::size_t left_out = 0; left_out < configuration.size(); ++left_out) {
-      asr_ism::Configuration rest = configuration;
+      asr_common::Configuration rest = configuration;
       rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(left_out));
       sum += bestConfidence(recognizer.recognize(rest));
       ++count;

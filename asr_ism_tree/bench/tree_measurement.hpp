@@ -32,7 +32,7 @@ struct RecognitionTiming {
 
 /// Recognises every configuration, in passes, as the settings say.
 RecognitionTiming timeRecognition(const TreeRecognizer& recognizer,
-                                  const std::vector<asr_ism::Configuration>& configurations,
+                                  const std::vector<asr_common::Configuration>& configurations,
                                   const BenchmarkSettings& settings);
 
 /// Confidence of the best instance, 0 if there is none.
@@ -44,6 +44,6 @@ double recognisedFraction(const std::vector<double>& confidences);
 /// Mean over the sampled configurations and over every object in them of the best confidence
 /// with that object left out.
 double meanConfidenceWithOneLeftOut(const TreeRecognizer& recognizer,
-                                    const std::vector<asr_ism::Configuration>& configurations);
+                                    const std::vector<asr_common::Configuration>& configurations);
 
 }  // namespace asr_ism_tree::bench

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <sstream>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/input_limits.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 int IsmTree::height() const {
   return level.empty() ? 0 : *std::max_element(level.begin(), level.end()) + 1;

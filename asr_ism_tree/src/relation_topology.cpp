@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 RelationTopology::RelationTopology(std::vector<ObjectKey> objects)
     : objects_(std::move(objects)), adjacency_(objects_.size() * objects_.size(), 0) {

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 SceneModels SceneModels::load(const std::vector<std::string>& model_files,
                               const std::vector<std::string>& scenes) {
@@ -64,7 +64,7 @@ const IsmTree& SceneModels::tree(const std::string& scene) const {
   return *model(scene).tree;
 }
 
-std::vector<SceneInstance> SceneModels::recognize(const asr_ism::Configuration& configuration,
+std::vector<SceneInstance> SceneModels::recognize(const asr_common::Configuration& configuration,
                                                   const std::vector<std::string>& scenes) const {
   std::vector<const Model*> wanted;
   if (scenes.empty()) {

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <numeric>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/input_limits.hpp"
 #include "asr_ism/ism_learning.hpp"
 #include "asr_ism_tree/star_partition.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <numeric>
 #include <tuple>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_ism_tree {
 
@@ -77,7 +77,7 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
     : tree_(tree), parameters_(parameters), pool_(pool) {
   tree_.validate("ISM tree");
   if (parameters_.results_passed_up == 0) {
-    throw asr_ism::InputError("tree recognition: results_passed_up must be at least 1");
+    throw asr_common::InputError("tree recognition: results_passed_up must be at least 1");
   }
   levels_.resize(tree_.height());
   for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
@@ -94,14 +94,14 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
   }
 }
 
-std::vector<SceneInstance> TreeRecognizer::recognize(const asr_ism::Configuration& configuration,
+std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configuration& configuration,
                                                      TreeRecognitionStats* stats) const {
   // Validate, then visit estimates in a canonical order so the input order cannot matter.
   std::vector<Pose> poses;
   poses.reserve(configuration.size());
   for (std::size_t i = 0; i < configuration.size(); ++i) {
     const auto& estimate = configuration[i];
-    poses.push_back(asr_ism::validatedPose(
+    poses.push_back(asr_common::validatedPose(
         estimate.pose.position, estimate.pose.orientation,
         "object estimate " + std::to_string(i) + " (" + estimate.key.toString() + ")"));
   }

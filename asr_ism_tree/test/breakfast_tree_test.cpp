@@ -12,9 +12,9 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::Configuration;
+using asr_common::Configuration;
+using asr_common::Pose;
 using asr_ism::Demonstration;
-using asr_ism::Pose;
 
 IsmTree learn(const Demonstration& demonstration, const std::string& topology) {
   const RelationTopology relations =

@@ -10,14 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
+#include "asr_common/testing/tool_run.hpp"
 #include "asr_ism/configuration_file.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
-#include "asr_ism/testing/tool_run.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 
 #ifndef ISM_TOOL
@@ -27,23 +27,23 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::testing::fileBytes;
-using asr_ism::testing::recording;
-using asr_ism::testing::TempDir;
+using asr_common::testing::fileBytes;
+using asr_common::testing::recording;
+using asr_common::testing::TempDir;
 using nlohmann::json;
 
 constexpr char kPrefix[] = "asr_ism_tool";
 
 // ---- running the tool ----
 
-using asr_ism::testing::describe;
-using asr_ism::testing::expectInputError;
-using asr_ism::testing::expectSuccess;
-using asr_ism::testing::lines;
-using asr_ism::testing::ToolRun;
+using asr_common::testing::describe;
+using asr_common::testing::expectInputError;
+using asr_common::testing::expectSuccess;
+using asr_common::testing::lines;
+using asr_common::testing::ToolRun;
 
 ToolRun runIsm(const TempDir& dir, const std::vector<std::string>& arguments) {
-  return asr_ism::testing::runTool(ISM_TOOL, dir, arguments);
+  return asr_common::testing::runTool(ISM_TOOL, dir, arguments);
 }
 
 // A usage error: exit code 2, one line naming `named`, then the usage text and nothing else.
@@ -129,7 +129,7 @@ double bestConfidence(const json& output) {
 
 // The objects of `configuration` as a JSON objects file (nlohmann keeps doubles exact).
 std::string writeJsonObjects(const TempDir& dir, const std::string& name,
-                             const asr_ism::Configuration& configuration) {
+                             const asr_common::Configuration& configuration) {
   json objects = json::array();
   for (const auto& estimate : configuration) {
     const auto& p = estimate.pose.position;
@@ -264,7 +264,7 @@ TEST_F(IsmToolOnRecordings, RecognizeARecordedSetAsJson) {
 TEST_F(IsmToolOnRecordings, RecognizeObjectsFilesInYamlAndJson) {
   const std::string model = dir_.file("complete.sqlite");
   learn("gedeck", "complete", model);
-  const asr_ism::Configuration set =
+  const asr_common::Configuration set =
       asr_ism::sqlite::readDemonstration(demo_, "gedeck").configuration(5);
   const std::string yaml = dir_.file("set5.yaml");
   asr_ism::writeConfigurationFile(yaml, set);

@@ -9,13 +9,13 @@
 #include <fstream>
 #include <map>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
 #include "asr_ism/testing/sqlite_dump.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -24,17 +24,17 @@ namespace asr_ism_tree::sqlite {
 namespace {
 
 namespace fs = std::filesystem;
+using asr_common::InputError;
+using asr_common::testing::fileBytes;
+using asr_common::testing::inputErrorOf;
+using asr_common::testing::recording;
+using asr_common::testing::TempDir;
 using asr_ism::Demonstration;
-using asr_ism::InputError;
 using asr_ism::sqlite::Database;
 using asr_ism::sqlite::Statement;
 using asr_ism::testing::Dump;
 using asr_ism::testing::dumpFile;
-using asr_ism::testing::fileBytes;
-using asr_ism::testing::inputErrorOf;
 using asr_ism::testing::queryRows;
-using asr_ism::testing::recording;
-using asr_ism::testing::TempDir;
 
 // ---- bit-exact comparisons ----
 
@@ -42,7 +42,7 @@ bool sameBits(double a, double b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
-void expectSamePose(const asr_ism::Pose& a, const asr_ism::Pose& b, const std::string& what) {
+void expectSamePose(const asr_common::Pose& a, const asr_common::Pose& b, const std::string& what) {
   for (int i = 0; i < 3; ++i)
     EXPECT_TRUE(sameBits(a.position[i], b.position[i])) << what << " position " << i;
   for (int i = 0; i < 4; ++i) {
@@ -177,18 +177,18 @@ const Learned& completeOffice() {
 
 // Configurations to recognise: single demonstration steps, and two steps shown at once (two
 // overlapping candidate instances), so several instances and partial matches occur.
-std::vector<asr_ism::Configuration> testConfigurations(const Demonstration& demonstration) {
-  std::vector<asr_ism::Configuration> configurations;
+std::vector<asr_common::Configuration> testConfigurations(const Demonstration& demonstration) {
+  std::vector<asr_common::Configuration> configurations;
   const std::size_t last = demonstration.stepCount() - 1;
   for (std::size_t step : {std::size_t{0}, last / 2, last})
     configurations.push_back(demonstration.configuration(step));
-  asr_ism::Configuration both = demonstration.configuration(0);
+  asr_common::Configuration both = demonstration.configuration(0);
   for (auto estimate : demonstration.configuration(last)) {
     estimate.pose.position.x() += 0.05;
     both.push_back(estimate);
   }
   configurations.push_back(both);
-  asr_ism::Configuration partial = demonstration.configuration(last / 3);
+  asr_common::Configuration partial = demonstration.configuration(last / 3);
   partial.resize(partial.size() / 2);
   configurations.push_back(partial);
   return configurations;

@@ -9,8 +9,8 @@
 #include <ostream>
 #include <string>
 
+#include "asr_common/testing/recordings_skip.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -19,12 +19,12 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::Configuration;
-using asr_ism::Pose;
+using asr_common::Configuration;
+using asr_common::Pose;
 
 constexpr double kAccepted = 0.99;
 
-using asr_ism::testing::recording;
+using asr_common::testing::recording;
 
 struct KitchenSceneInfo {
   const char* file;
@@ -192,15 +192,15 @@ TEST_P(KitchenScene, ConfidenceIsInvariantUnderRigidMotions) {
       for (const Pose& motion : motions) {
         Configuration moved = configuration;
         for (auto& estimate : moved)
-          estimate.pose = asr_ism::compose(motion, estimate.pose);
+          estimate.pose = asr_common::compose(motion, estimate.pose);
         const auto instances = recognizer.recognize(moved);
         const std::string what =
             std::string(topologyName(complete_topology)) + " tree, set " + std::to_string(step);
         ASSERT_EQ(instances.size(), original.size()) << what;
         for (std::size_t i = 0; i < original.size(); ++i)
           EXPECT_NEAR(instances[i].confidence, original[i].confidence, 1e-9) << what;
-        EXPECT_TRUE(asr_ism::approximatelyEqual(
-            instances[0].pose, asr_ism::compose(motion, original[0].pose), 1e-9, 1e-9))
+        EXPECT_TRUE(asr_common::approximatelyEqual(
+            instances[0].pose, asr_common::compose(motion, original[0].pose), 1e-9, 1e-9))
             << what;
       }
     }
@@ -298,9 +298,9 @@ TEST(Recordings, StarTreeAcceptsWhatTheCompleteTreeRejects) {
     const std::size_t center = s.star_center;
 
     Configuration configuration = demonstration.configuration(c.t1);
-    const Pose placed = asr_ism::compose(
+    const Pose placed = asr_common::compose(
         *demonstration.pose(c.t1, center),
-        asr_ism::relativePose(*demonstration.pose(c.t2, center), *demonstration.pose(c.t2, y)));
+        asr_common::relativePose(*demonstration.pose(c.t2, center), *demonstration.pose(c.t2, y)));
     for (auto& estimate : configuration) {
       if (estimate.key == c.moved)
         estimate.pose = placed;

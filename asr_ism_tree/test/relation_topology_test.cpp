@@ -4,12 +4,12 @@
 
 #include <string>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 std::vector<ObjectKey> objects(int count) {
   std::vector<ObjectKey> keys;

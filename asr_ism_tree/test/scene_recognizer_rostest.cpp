@@ -14,29 +14,29 @@
 #include <limits>
 #include <memory>
 
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/child_process.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/rostest_support.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/node_process.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/rostest_support.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::testing::NodeProcess;
-using asr_ism::testing::TempDir;
-using asr_ism::testing::waitFor;
+using asr_common::ChildProcess;
+using asr_common::testing::TempDir;
+using asr_common::testing::waitFor;
 
 constexpr double kRate = 2.0;  // Hz, in continuous mode
 
-asr_msgs::ObjectEstimate estimateMessage(const asr_ism::ObjectEstimate& estimate) {
+asr_msgs::ObjectEstimate estimateMessage(const asr_common::ObjectEstimate& estimate) {
   std_msgs::Header header;
   header.frame_id = "map";
   header.stamp = ros::Time::now();
-  return asr_ism::ros_interface::toEstimateMessage(estimate, header);
+  return asr_common::ros_interface::toEstimateMessage(estimate, header);
 }
 
 // Waits until `done` holds, spinning, for at most `seconds`.
@@ -46,19 +46,19 @@ class SceneRecognizerNodeTest : public ::testing::Test {
   void SetUp() override {
     REQUIRE_RECORDINGS();
     demonstration_ = asr_ism::sqlite::readDemonstration(
-        asr_ism::testing::recording("story_2.sqlite"), "Brot_Regal");
+        asr_common::testing::recording("story_2.sqlite"), "Brot_Regal");
     model_ = dir_.file("brot_regal.sqlite");
     sqlite::saveIsmTree(
         model_,
         generateIsmTree(demonstration_, RelationTopology::complete(demonstration_.objects()), {}),
         "test");
     const asr_ism::Demonstration muesli = asr_ism::sqlite::readDemonstration(
-        asr_ism::testing::recording("story_2.sqlite"), "Muesli_Regal");
+        asr_common::testing::recording("story_2.sqlite"), "Muesli_Regal");
     other_model_ = dir_.file("muesli_regal.sqlite");
     sqlite::saveIsmTree(other_model_,
                         generateIsmTree(muesli, RelationTopology::complete(muesli.objects()), {}),
                         "test");
-    node_ = std::make_unique<NodeProcess>(
+    node_ = std::make_unique<ChildProcess>(
         std::string(ASR_NODE_DIR) + "/scene_recognizer",
         std::vector<std::string>{"__name:=scene_recognizer", "_model_files:=" + model_,
                                  "_rate:=" + std::to_string(kRate), "_estimate_timeout:=0"});
@@ -66,9 +66,9 @@ class SceneRecognizerNodeTest : public ::testing::Test {
     ASSERT_TRUE(recognize_.waitForExistence(ros::Duration(30))) << "scene_recognizer did not start";
   }
 
-  asr_msgs::RecognizeScenes::Response ask(const asr_ism::Configuration& configuration) {
+  asr_msgs::RecognizeScenes::Response ask(const asr_common::Configuration& configuration) {
     asr_msgs::RecognizeScenes service;
-    for (const asr_ism::ObjectEstimate& estimate : configuration)
+    for (const asr_common::ObjectEstimate& estimate : configuration)
       service.request.objects.push_back(estimateMessage(estimate));
     EXPECT_TRUE(recognize_.call(service));
     return service.response;
@@ -78,7 +78,7 @@ class SceneRecognizerNodeTest : public ::testing::Test {
   asr_ism::Demonstration demonstration_;
   std::string model_;
   std::string other_model_;
-  std::unique_ptr<NodeProcess> node_;
+  std::unique_ptr<ChildProcess> node_;
   ros::NodeHandle handle_;
   ros::ServiceClient recognize_;
 };
@@ -95,8 +95,8 @@ TEST_F(SceneRecognizerNodeTest, ServiceRecognisesARecordedConfiguration) {
 }
 
 TEST_F(SceneRecognizerNodeTest, ClutterOnlyHasNoInstance) {
-  asr_ism::Configuration clutter = demonstration_.configuration(7);
-  for (asr_ism::ObjectEstimate& estimate : clutter)
+  asr_common::Configuration clutter = demonstration_.configuration(7);
+  for (asr_common::ObjectEstimate& estimate : clutter)
     estimate.key.type = "Unknown_" + estimate.key.type;
   const asr_msgs::RecognizeScenes::Response response = ask(clutter);
   EXPECT_TRUE(response.instances.empty());
@@ -105,7 +105,7 @@ TEST_F(SceneRecognizerNodeTest, ClutterOnlyHasNoInstance) {
 
 TEST_F(SceneRecognizerNodeTest, MalformedEstimatesAreRejectedCountedAndTheNodeKeepsRunning) {
   asr_msgs::RecognizeScenes service;
-  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(7))
+  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(7))
     service.request.objects.push_back(estimateMessage(estimate));
   asr_msgs::ObjectEstimate nan = service.request.objects[0];
   nan.pose.pose.position.x = std::numeric_limits<double>::quiet_NaN();
@@ -115,7 +115,7 @@ TEST_F(SceneRecognizerNodeTest, MalformedEstimatesAreRejectedCountedAndTheNodeKe
   asr_msgs::ObjectEstimate empty = service.request.objects[2];
   empty.type = "";
   service.request.objects = {nan, zero, empty};
-  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(7))
+  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(7))
     service.request.objects.push_back(estimateMessage(estimate));
   ASSERT_TRUE(recognize_.call(service));
   EXPECT_EQ(service.response.rejected_estimates, 3u);
@@ -150,7 +150,7 @@ TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesWithinTwoPeriods) {
   ASSERT_TRUE(waitFor(
       [&] { return objects.getNumSubscribers() > 0 && instances.getNumPublishers() > 0; }, 30));
   asr_msgs::ObjectEstimateList list;
-  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(12))
+  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(12))
     list.objects.push_back(estimateMessage(estimate));
   published = ros::WallTime::now();
   objects.publish(list);
@@ -211,11 +211,12 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
   TempDir dir("asr_trainer_rostest");
   const std::string model = dir.file("trained.sqlite");
   for (const char* topology : {"star", "optimised"}) {
-    NodeProcess trainer(std::string(ASR_NODE_DIR) + "/trainer",
-                        {std::string("__name:=trainer_") + topology,
-                         "_demonstration_file:=" + asr_ism::testing::recording("story_2.sqlite"),
-                         "_model_file:=" + model, "_scenes:=Getraenke_Regal",
-                         std::string("_topology:=") + topology, "_tests:=100"});
+    ChildProcess trainer(
+        std::string(ASR_NODE_DIR) + "/trainer",
+        {std::string("__name:=trainer_") + topology,
+         "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
+         "_model_file:=" + model, "_scenes:=Getraenke_Regal", std::string("_topology:=") + topology,
+         "_tests:=100"});
     EXPECT_EQ(trainer.waitForExit(std::chrono::seconds(60)), 0) << topology;
     const IsmTree tree = sqlite::loadIsmTree(model, "Getraenke_Regal");
     EXPECT_TRUE(tree.topology.isConnected());
@@ -227,24 +228,24 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
   int refused = 0;
   for (const char* parameter : {"_seed:=-1", "_seed:=4294967303", "_tests:=1000000000",
                                 "_max_evaluations:=1", "_alpha:=nan"}) {
-    NodeProcess out_of_range(
+    ChildProcess out_of_range(
         std::string(ASR_NODE_DIR) + "/trainer",
         {"__name:=trainer_range_" + std::to_string(refused++),
-         "_demonstration_file:=" + asr_ism::testing::recording("story_2.sqlite"),
+         "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
          "_model_file:=" + dir.file("refused.sqlite"), "_scenes:=Getraenke_Regal",
          "_topology:=star", parameter});
     EXPECT_EQ(out_of_range.waitForExit(std::chrono::seconds(30)), 1) << parameter;
   }
   EXPECT_FALSE(std::filesystem::exists(dir.file("refused.sqlite")));
-  NodeProcess largest_seed(std::string(ASR_NODE_DIR) + "/trainer",
+  ChildProcess largest_seed(std::string(ASR_NODE_DIR) + "/trainer",
                            {"__name:=trainer_largest_seed",
-                            "_demonstration_file:=" + asr_ism::testing::recording("story_2.sqlite"),
+                            "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
                             "_model_file:=" + dir.file("largest_seed.sqlite"),
                             "_scenes:=Getraenke_Regal", "_topology:=star", "_seed:=4294967295"});
   EXPECT_EQ(largest_seed.waitForExit(std::chrono::seconds(60)), 0);
-  NodeProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
-                  {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
-                   "_model_file:=" + model, "_topology:=star"});
+  ChildProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
+                   {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
+                    "_model_file:=" + model, "_topology:=star"});
   EXPECT_EQ(bad.waitForExit(std::chrono::seconds(30)), 1);
 }
 
@@ -252,5 +253,5 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
 }  // namespace asr_ism_tree
 
 int main(int argc, char** argv) {
-  return asr_ism::testing::runRostests(argc, argv, "scene_recognizer_rostest");
+  return asr_common::testing::runRostests(argc, argv, "scene_recognizer_rostest");
 }

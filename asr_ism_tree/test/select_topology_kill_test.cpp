@@ -18,7 +18,7 @@
 
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/topology_file.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
@@ -32,8 +32,8 @@ extern char** environ;
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::testing::fileBytes;
-using asr_ism::testing::TempDir;
+using asr_common::testing::fileBytes;
+using asr_common::testing::TempDir;
 using Clock = std::chrono::steady_clock;
 
 // Starts the tool with its output discarded; returns its process id.

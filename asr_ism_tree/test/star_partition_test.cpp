@@ -6,13 +6,13 @@
 #include <random>
 #include <set>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "golden_graphs.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 // Stars as comparable tuples, so a failure prints the whole partition.
 std::string describe(const std::vector<Star>& stars) {

@@ -12,7 +12,7 @@
 
 namespace asr_ism_tree::synthetic {
 
-using asr_ism::Pose;
+using asr_common::Pose;
 
 inline Pose yawPose(double x, double y, double z, double yaw) {
   return Pose(Eigen::Vector3d(x, y, z),
@@ -36,7 +36,7 @@ inline Pose localPose(int object, int count, int step) {
 }
 
 inline asr_ism::Demonstration demonstration(const std::string& scene,
-                                            const std::vector<asr_ism::ObjectKey>& objects,
+                                            const std::vector<asr_common::ObjectKey>& objects,
                                             int steps = 5) {
   asr_ism::Demonstration result(scene, objects);
   const int count = static_cast<int>(objects.size());
@@ -44,7 +44,7 @@ inline asr_ism::Demonstration demonstration(const std::string& scene,
     result.addStep();
     for (int object = 0; object < count; ++object)
       result.setPose(step, object,
-                     asr_ism::compose(placement(step), localPose(object, count, step)));
+                     asr_common::compose(placement(step), localPose(object, count, step)));
   }
   return result;
 }

@@ -4,18 +4,18 @@
 
 #include <filesystem>
 
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
 namespace fs = std::filesystem;
-using asr_ism::testing::fileBytes;
-using asr_ism::testing::inputErrorOf;
-using asr_ism::testing::TempDir;
+using asr_common::testing::fileBytes;
+using asr_common::testing::inputErrorOf;
+using asr_common::testing::TempDir;
 
 // Two instances of one type, an object without id and a unique type with an id.
 const std::vector<ObjectKey> kObjects = {
@@ -42,7 +42,7 @@ TEST(TopologyFile, RoundTrip) {
 TEST(TopologyFile, RoundTripOfStarAndCompleteOnARecording) {
   REQUIRE_RECORDINGS();
   const auto objects = asr_ism::sqlite::readDemonstration(
-                           asr_ism::testing::recording("story_1.sqlite"), "Spuelkorb_3")
+                           asr_common::testing::recording("story_1.sqlite"), "Spuelkorb_3")
                            .objects();
   TempDir dir("asr_topology");
   const std::string path = dir.file("topology.txt");

@@ -5,11 +5,11 @@
 
 #include <string>
 
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/topology_selection/relation_violations.hpp"
 #include "asr_ism_tree/topology_selection/topology_cost.hpp"
 #include "asr_ism_tree/topology_selection/topology_neighbours.hpp"
@@ -20,7 +20,7 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::testing::inputErrorOf;
+using asr_common::testing::inputErrorOf;
 
 std::vector<ObjectKey> objects(int count) {
   std::vector<ObjectKey> keys;
@@ -159,12 +159,12 @@ asr_ism::Demonstration rowOfThree() {
 
 TEST(RelationViolations, AMovedObjectBreaksItsRelationsAndNoOthers) {
   const asr_ism::Demonstration demonstration = rowOfThree();
-  asr_ism::Configuration demonstrated = demonstration.configuration(3);
-  asr_ism::Configuration moved = demonstrated;
+  asr_common::Configuration demonstrated = demonstration.configuration(3);
+  asr_common::Configuration moved = demonstrated;
   moved[2].pose.position.y() += 0.3;  // object 2 pushed 30 cm aside
-  asr_ism::Configuration slightly = demonstrated;
+  asr_common::Configuration slightly = demonstrated;
   slightly[2].pose.position.y() += 0.01;  // 1 cm: within what the ISM tolerates
-  asr_ism::Configuration without = demonstrated;
+  asr_common::Configuration without = demonstrated;
   without.pop_back();  // object 2 absent
   const RelationViolations violations(demonstration, {demonstrated, moved, slightly, without}, {},
                                       0.05);
@@ -188,7 +188,7 @@ TEST(RelationViolations, AMovedObjectBreaksItsRelationsAndNoOthers) {
 
 TEST(RelationViolations, GrowingAddsOnlyTheRelationsThatCatchSomething) {
   const asr_ism::Demonstration demonstration = rowOfThree();
-  asr_ism::Configuration far = demonstration.configuration(2);
+  asr_common::Configuration far = demonstration.configuration(2);
   far[2].pose.position.z() += 0.5;  // only relations to object 2 break
   const RelationViolations far_violations(demonstration, {far}, {}, 0.05);
   RelationTopology star_at_1(objects(3));
@@ -220,7 +220,7 @@ class TopologySelectionOnRecordings : public ::testing::Test {
   void SetUp() override {
     REQUIRE_RECORDINGS();
     demonstration_ = asr_ism::sqlite::readDemonstration(
-        asr_ism::testing::recording("story_2.sqlite"), "Getraenke_Regal");
+        asr_common::testing::recording("story_2.sqlite"), "Getraenke_Regal");
     options_.test_count = 120;
     options_.max_evaluations = 30;
     options_.seed = 7;
@@ -253,7 +253,7 @@ TEST(TopologySelection, NothingMeasuredBeatsTheResultNotEvenTheCompleteTopology)
   // topology's zero errors, and a climb from the stars does not get there within the
   // evaluations; the search must still end on the best topology it measured.
   const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
-      asr_ism::testing::recording("story_1.sqlite"), "Spuelkorb_3");
+      asr_common::testing::recording("story_1.sqlite"), "Spuelkorb_3");
   TopologySelectionOptions options;
   options.test_count = 60;
   options.max_evaluations = 16;
@@ -295,7 +295,7 @@ TEST_F(TopologySelectionOnRecordings, TestConfigurationsAreLabelledStoredAndRead
   ASSERT_EQ(again.valid.size(), tests.valid.size());
   EXPECT_EQ(again.valid.front().front().pose.position, tests.valid.front().front().pose.position);
 
-  asr_ism::testing::TempDir dir("asr_topology_tests");
+  asr_common::testing::TempDir dir("asr_topology_tests");
   const std::string path = dir.file("tests.sqlite");
   writeTestConfigurations(path, tests, demonstration.objects());
   const TestConfigurations read = readTestConfigurations(path, "Getraenke_Regal");
@@ -303,7 +303,7 @@ TEST_F(TopologySelectionOnRecordings, TestConfigurationsAreLabelledStoredAndRead
   ASSERT_EQ(read.invalid.size(), tests.invalid.size());
   for (std::size_t i = 0; i < tests.invalid.size(); ++i) {
     ASSERT_EQ(read.invalid[i].size(), tests.invalid[i].size());
-    for (const asr_ism::ObjectEstimate& estimate : tests.invalid[i]) {
+    for (const asr_common::ObjectEstimate& estimate : tests.invalid[i]) {
       const auto found = std::find_if(read.invalid[i].begin(), read.invalid[i].end(),
                                       [&](const auto& e) { return e.key == estimate.key; });
       ASSERT_NE(found, read.invalid[i].end());

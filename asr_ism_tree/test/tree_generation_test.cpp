@@ -5,15 +5,15 @@
 #include <algorithm>
 #include <string>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "golden_graphs.hpp"
 #include "synthetic_scene.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::InputError;
-using asr_ism::Pose;
+using asr_common::InputError;
+using asr_common::Pose;
 
 struct ExpectedMember {
   std::string object;  // ObjectKey::toString(): "A:1", or a child ISM's name
@@ -58,8 +58,8 @@ void expectTree(const IsmTree& tree, const ExpectedTree& expected) {
     // The reference is the first member and votes with the identity.
     EXPECT_EQ(ism.members[0].object, ism.reference);
     ASSERT_FALSE(ism.members[0].relative_poses.empty());
-    EXPECT_TRUE(asr_ism::approximatelyEqual(ism.members[0].relative_poses[0].reference_in_member,
-                                            Pose::identity(), 1e-12, 1e-12));
+    EXPECT_TRUE(asr_common::approximatelyEqual(ism.members[0].relative_poses[0].reference_in_member,
+                                               Pose::identity(), 1e-12, 1e-12));
   }
   EXPECT_EQ(tree.height(), expected.height);
   EXPECT_EQ(tree.leafCount(), expected.leaves);
@@ -74,7 +74,7 @@ void expectRelativePosesFromTheDemonstration(const IsmTree& tree,
     const int reference = demonstration.indexOf(ism.reference);
     ASSERT_GE(reference, 0);
     for (const asr_ism::IsmMember& member : ism.members) {
-      const asr_ism::ObjectKey& stands_for =
+      const asr_common::ObjectKey& stands_for =
           member.isPlaceholder() ? tree.isms[member.child_ism].reference : member.object;
       const int object = demonstration.indexOf(stands_for);
       ASSERT_GE(object, 0) << stands_for.toString();
@@ -83,11 +83,11 @@ void expectRelativePosesFromTheDemonstration(const IsmTree& tree,
         steps += relative.step_count;
       EXPECT_EQ(steps, demonstration.stepCount()) << ism.name << " / " << member.object.toString();
       for (std::size_t step = 0; step < demonstration.stepCount(); ++step) {
-        const Pose expected = asr_ism::relativePose(*demonstration.pose(step, object),
-                                                    *demonstration.pose(step, reference));
+        const Pose expected = asr_common::relativePose(*demonstration.pose(step, object),
+                                                       *demonstration.pose(step, reference));
         const bool found = std::any_of(member.relative_poses.begin(), member.relative_poses.end(),
                                        [&](const auto& relative) {
-                                         return asr_ism::approximatelyEqual(
+                                         return asr_common::approximatelyEqual(
                                              relative.reference_in_member, expected, 1e-9, 1e-9);
                                        });
         EXPECT_TRUE(found) << ism.name << " / " << member.object.toString() << ", step " << step;
@@ -174,7 +174,7 @@ TEST(TreeGeneration, SingleObject) {
 TEST(TreeGeneration, TopologyObjectOrderMayDifferFromTheDemonstration) {
   // Same triangle, objects listed C, B, A: the stars follow the topology's indices (root C), the
   // trajectories are found by key.
-  std::vector<asr_ism::ObjectKey> reversed = golden::lettered(3);
+  std::vector<asr_common::ObjectKey> reversed = golden::lettered(3);
   std::reverse(reversed.begin(), reversed.end());
   const auto demonstration = synthetic::demonstration("triangle", golden::lettered(3));
   const IsmTree tree = generateIsmTree(demonstration, RelationTopology::complete(reversed), {});
@@ -212,7 +212,7 @@ TEST(TreeGeneration, DisconnectedTopologyIsAnError) {
 }
 
 TEST(TreeGeneration, TopologyNamingAnUnknownObjectIsAnError) {
-  std::vector<asr_ism::ObjectKey> keys = golden::lettered(3);
+  std::vector<asr_common::ObjectKey> keys = golden::lettered(3);
   keys.push_back({"Teapot", "9"});
   const auto demonstration = synthetic::demonstration("scene", golden::lettered(3));
   try {

@@ -8,7 +8,7 @@
 #include <numeric>
 #include <random>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "instance_lookup.hpp"
 #include "synthetic_scene.hpp"
@@ -16,9 +16,9 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::Configuration;
-using asr_ism::InputError;
-using asr_ism::Pose;
+using asr_common::Configuration;
+using asr_common::InputError;
+using asr_common::Pose;
 
 constexpr double kDegree = M_PI / 180.0;
 
@@ -53,7 +53,7 @@ class TreeRecognizerTest : public ::testing::Test {
 Configuration transformed(const Configuration& configuration, const Pose& transform) {
   Configuration result = configuration;
   for (auto& estimate : result)
-    estimate.pose = asr_ism::compose(transform, estimate.pose);
+    estimate.pose = asr_common::compose(transform, estimate.pose);
   return result;
 }
 
@@ -107,7 +107,7 @@ TEST_F(TreeRecognizerTest, EveryDemonstratedStepIsRecognisedFully) {
       EXPECT_EQ(instances[0].objects.size(), kObjects.size());
       EXPECT_EQ(instances[0].scene, "breakfast");
       // The instance sits where the root's reference (the plate) is.
-      EXPECT_TRUE(asr_ism::approximatelyEqual(
+      EXPECT_TRUE(asr_common::approximatelyEqual(
           instances[0].pose,
           *demonstration_.pose(step, tree->topology.indexOf(tree->isms[0].reference)), 1e-9, 1e-9));
       for (const InstanceIsm& ism : instances[0].isms)
@@ -136,8 +136,8 @@ void expectInvariantUnderRigidTransforms(const IsmTree& tree, const Configuratio
     const auto moved = recognizer.recognize(transformed(configuration, transform));
     ASSERT_FALSE(moved.empty());
     EXPECT_NEAR(moved[0].confidence, confidence, 1e-9);
-    EXPECT_TRUE(asr_ism::approximatelyEqual(
-        moved[0].pose, asr_ism::compose(transform, original[0].pose), 1e-9, 1e-9));
+    EXPECT_TRUE(asr_common::approximatelyEqual(
+        moved[0].pose, asr_common::compose(transform, original[0].pose), 1e-9, 1e-9));
     for (const InstanceObject& object : original[0].objects) {
       const InstanceObject* moved_object = find(moved[0], object.key);
       ASSERT_NE(moved_object, nullptr);
@@ -328,7 +328,7 @@ TEST_F(TreeRecognizerTest, TwoCopiesFarApartAreTwoInstances) {
       const Pose expected_pose =
           copy == 0 ? first[kPlate].pose
                     : Pose(first[kPlate].pose.position + offset, first[kPlate].pose.orientation);
-      EXPECT_TRUE(asr_ism::approximatelyEqual(instance.pose, expected_pose, 1e-9, 1e-9));
+      EXPECT_TRUE(asr_common::approximatelyEqual(instance.pose, expected_pose, 1e-9, 1e-9));
     }
     EXPECT_EQ(copies_seen[0], 1);
     EXPECT_EQ(copies_seen[1], 1);

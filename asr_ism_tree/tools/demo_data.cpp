@@ -7,11 +7,11 @@
 #include <iostream>
 #include <sstream>
 
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/configuration_file.hpp"
-#include "asr_ism/input_error.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -19,10 +19,10 @@
 namespace {
 
 namespace fs = std::filesystem;
-using asr_ism::Configuration;
+using asr_common::Configuration;
+using asr_common::ObjectKey;
+using asr_common::Pose;
 using asr_ism::Demonstration;
-using asr_ism::ObjectKey;
-using asr_ism::Pose;
 
 const char* const kUsage =
     "usage: asr_demo_data --out DIR [--seed S] [--force]\n"
@@ -50,7 +50,7 @@ const Pose& poseOf(const Configuration& configuration, const ObjectKey& key) {
     if (estimate.key == key)
       return estimate.pose;
   }
-  throw asr_ism::InputError("the breakfast configuration has no " + key.toString());
+  throw asr_common::InputError("the breakfast configuration has no " + key.toString());
 }
 
 // The setting of the middle step, turned about the vertical through the plate and shifted on the
@@ -102,8 +102,8 @@ std::string recognitionCheck(const Demonstration& demonstration, const Configura
 }
 
 int run(const std::vector<std::string>& arguments) {
-  using asr_ism_tree::cli::UsageError;
-  const asr_ism_tree::cli::CommandLine options(arguments, {"out", "seed"}, {"force"});
+  using asr_common::cli::UsageError;
+  const asr_common::cli::CommandLine options(arguments, {"out", "seed"}, {"force"});
   const fs::path out = options.required("out");
   const long long seed = options.integer("seed", 1, 0, 0xffffffffLL);
   const bool force = options.flag("force");
@@ -114,15 +114,15 @@ int run(const std::vector<std::string>& arguments) {
   if (!force) {
     for (const fs::path& path : {demonstration_path, correct_path, disturbed_path}) {
       if (fs::exists(path)) {
-        throw asr_ism::InputError(path.string() +
-                                  " exists already; nothing written (give --force to replace)");
+        throw asr_common::InputError(path.string() +
+                                     " exists already; nothing written (give --force to replace)");
       }
     }
   }
   std::error_code error;
   fs::create_directories(out, error);
   if (error)
-    throw asr_ism::InputError(out.string() + ": cannot create the folder: " + error.message());
+    throw asr_common::InputError(out.string() + ": cannot create the folder: " + error.message());
 
   const Demonstration demonstration =
       asr_ism::makeBreakfastDemonstration(static_cast<std::uint32_t>(seed));
@@ -165,10 +165,10 @@ int main(int argc, char** argv) {
   }
   try {
     return run(arguments);
-  } catch (const asr_ism_tree::cli::UsageError& error) {
+  } catch (const asr_common::cli::UsageError& error) {
     std::cerr << "asr_demo_data: " << error.message << "\n" << kUsage;
     return 2;
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     std::cerr << "asr_demo_data: error: " << error.what() << "\n";
     return 1;
   } catch (const fs::filesystem_error& error) {

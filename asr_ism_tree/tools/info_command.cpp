@@ -1,15 +1,15 @@
 #include <cmath>
 #include <iostream>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "commands.hpp"
 
 namespace asr_ism_tree::tools {
 
-using cli::CommandLine;
-using cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 namespace {
 
 void printIsm(const IsmTree& tree, int ism, int depth) {
@@ -55,7 +55,7 @@ int runInfo(const std::vector<std::string>& arguments) {
   }
   const std::vector<std::string> scenes = sqlite::listModelScenes(model_path);
   if (scenes.empty()) {
-    throw asr_ism::InputError(model_path + ": contains no ISM tree model");
+    throw asr_common::InputError(model_path + ": contains no ISM tree model");
   }
   // Every scene is described; one that cannot be used is named with the reason, and the exit
   // code says that the file is not all usable.

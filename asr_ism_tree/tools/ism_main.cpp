@@ -1,5 +1,5 @@
 // `asr ism <command> ...`: learn ISM trees, show them, recognise scenes from the command line.
-#include "asr_ism_tree/cli/command_main.hpp"
+#include "asr_common/cli/command_main.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -21,10 +21,10 @@ const char* const kUsage =
 
 int main(int argc, char** argv) {
   using namespace asr_ism_tree::tools;
-  return asr_ism_tree::cli::runCommandMain("ism", kUsage,
-                                           {{"learn", runLearn},
-                                            {"info", runInfo},
-                                            {"recognize", runRecognize},
-                                            {"select-topology", runSelectTopology}},
-                                           argc, argv);
+  return asr_common::cli::runCommandMain("ism", kUsage,
+                                         {{"learn", runLearn},
+                                          {"info", runInfo},
+                                          {"recognize", runRecognize},
+                                          {"select-topology", runSelectTopology}},
+                                         argc, argv);
 }

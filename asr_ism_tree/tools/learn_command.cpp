@@ -2,9 +2,9 @@
 #include <cmath>
 #include <iostream>
 
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/object_name.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
-#include "asr_ism_tree/cli/object_lookup.hpp"
 #include "asr_ism_tree/cli/recognition_options.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/star_center.hpp"
@@ -14,8 +14,8 @@
 
 namespace asr_ism_tree::tools {
 
-using cli::CommandLine;
-using cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 int runLearn(const std::vector<std::string>& arguments) {
   const CommandLine options(
@@ -35,10 +35,11 @@ int runLearn(const std::vector<std::string>& arguments) {
   RelationTopology topology;
   std::string topology_description;
   if (topology_spec == "star") {
-    const std::size_t center = options.has("star-center")
-                                   ? cli::findObject(options.required("star-center"),
-                                                     demonstration.objects(), "--star-center")
-                                   : chooseStarCenter(demonstration);
+    const std::size_t center =
+        options.has("star-center")
+            ? asr_common::resolveObjectName(options.required("star-center"),
+                                            demonstration.objects(), "--star-center")
+            : chooseStarCenter(demonstration);
     topology = RelationTopology::star(demonstration.objects(), center);
     topology_description = "star centred on " + demonstration.objects()[center].toString();
   } else if (topology_spec == "complete") {

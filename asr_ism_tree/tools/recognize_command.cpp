@@ -1,8 +1,8 @@
 #include <chrono>
 #include <iostream>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism_tree/cli/configuration_source.hpp"
 #include "asr_ism_tree/cli/scene_instance_output.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
@@ -11,14 +11,14 @@
 
 namespace asr_ism_tree::tools {
 
-using cli::CommandLine;
-using cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 int runRecognize(const std::vector<std::string>& arguments) {
   const CommandLine options(arguments, {"model", "scene", "objects", "demo", "set"}, {"json"});
   const std::string model_path = options.required("model");
   const std::string scene = options.required("scene");
-  const asr_ism::Configuration configuration = cli::loadConfiguration(options, scene);
+  const asr_common::Configuration configuration = cli::loadConfiguration(options, scene);
   const IsmTree tree = sqlite::loadIsmTree(model_path, scene);
   const TreeRecognizer recognizer(tree);
 

@@ -1,8 +1,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include "asr_common/cli/command_line.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
 #include "asr_ism_tree/cli/recognition_options.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/topology_file.hpp"
@@ -12,8 +12,8 @@
 
 namespace asr_ism_tree::tools {
 
-using cli::CommandLine;
-using cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <ostream>
 #include <utility>
 
+#include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/cli/timing.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
-#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "asr_pose_prediction/prediction_accuracy.hpp"
@@ -40,7 +40,7 @@ void measureSet(const asr_ism::Demonstration& demonstration, std::size_t step,
                 AccuracyRow& row) {
   const PosePredictor predictor(tree);
   const asr_ism_tree::TreeRecognizer recognizer(tree);
-  const asr_ism::Configuration configuration = demonstration.configuration(step);
+  const asr_common::Configuration configuration = demonstration.configuration(step);
   ++row.sets;
   for (std::size_t left_out = 0; left_out < configuration.size(); ++left_out) {
     const LeftOutPrediction outcome = predictLeftOutObject(
@@ -73,7 +73,7 @@ std::vector<AccuracyRow> measure(const asr_ism::Demonstration& demonstration,
   rows[1].held_out = true;
   const std::size_t sets =
       settings.accuracy_sets == 0 ? demonstration.stepCount() : settings.accuracy_sets;
-  for (std::size_t step : asr_ism_tree::cli::evenlySpaced(demonstration.stepCount(), sets)) {
+  for (std::size_t step : asr_common::cli::evenlySpaced(demonstration.stepCount(), sets)) {
     measureSet(demonstration, step, learned.tree, settings, rows[0]);
     const asr_ism_tree::IsmTree without_set = asr_ism_tree::generateIsmTree(
         withoutStep(demonstration, step), learned.tree.topology, learned.tree.parameters);
@@ -93,7 +93,7 @@ Distribution distributionOf(std::vector<double> values) {
   if (values.empty())
     return distribution;
   std::sort(values.begin(), values.end());
-  distribution.median = asr_ism_tree::cli::median(values);
+  distribution.median = asr_common::cli::median(values);
   const auto rank = static_cast<std::size_t>(std::ceil(0.9 * static_cast<double>(values.size())));
   distribution.p90 = values[std::max<std::size_t>(rank, 1) - 1];
   distribution.max = values.back();
@@ -104,7 +104,7 @@ std::vector<AccuracyRow> benchmarkKitchenAccuracy(const std::string& recordings,
                                                   const PredictionBenchmarkSettings& settings,
                                                   std::ostream& progress) {
   std::vector<AccuracyRow> rows;
-  for (const asr_ism_tree::cli::KitchenScene& kitchen_scene : asr_ism_tree::cli::kitchenScenes()) {
+  for (const asr_common::cli::KitchenScene& kitchen_scene : asr_common::cli::kitchenScenes()) {
     progress << "  " << kitchen_scene.scene << std::flush;
     const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
         recordings + "/" + kitchen_scene.file, kitchen_scene.scene);

@@ -1,7 +1,7 @@
 // `asr_prediction_bench [prediction] [options]` (`asr bench prediction`): how fast and how
 // accurately the objects of a scene are predicted.
+#include "asr_common/cli/single_command_main.hpp"
 #include "prediction_command.hpp"
-#include "single_command_main.hpp"
 
 namespace {
 
@@ -18,7 +18,7 @@ const char* const kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
-  return asr_pose_prediction::tools::runSingleCommandMain(
-      "asr_prediction_bench", "prediction", kUsage,
-      asr_pose_prediction::bench::runPredictionBenchmark, argc, argv);
+  return asr_common::cli::runSingleCommandMain("asr_prediction_bench", "prediction", kUsage,
+                                               asr_pose_prediction::bench::runPredictionBenchmark,
+                                               argc, argv);
 }

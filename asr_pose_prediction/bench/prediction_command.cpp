@@ -4,8 +4,8 @@
 #include <limits>
 #include <optional>
 
-#include "asr_ism_tree/cli/command_line.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/cli/recordings_folder.hpp"
 #include "prediction_report.hpp"
 #include "prediction_targets.hpp"
 #include "runtime_plot.hpp"
@@ -13,8 +13,8 @@
 namespace asr_pose_prediction::bench {
 namespace {
 
-using asr_ism_tree::cli::CommandLine;
-using asr_ism_tree::cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 // A count option that must be at least `minimum`.
 std::size_t count(const CommandLine& options, const std::string& name, std::size_t fallback,
@@ -49,7 +49,7 @@ int runPredictionBenchmark(const std::vector<std::string>& arguments) {
 
   std::vector<RuntimeRow> kitchen_rows;
   std::vector<AccuracyRow> accuracy_rows;
-  const std::optional<std::string> recordings = asr_ism_tree::cli::benchmarkRecordings(
+  const std::optional<std::string> recordings = asr_common::cli::benchmarkRecordings(
       options, ASR_RECORDINGS_DIR, "asr_prediction_bench", progress);
   const bool have_recordings = recordings.has_value();
   if (have_recordings) {

@@ -4,17 +4,17 @@
 #include <limits>
 #include <ostream>
 
+#include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/cli/timing.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism_tree/cli/recordings_folder.hpp"
-#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "asr_pose_prediction/pose_predictor.hpp"
 
 namespace asr_pose_prediction::bench {
 namespace {
 
-using asr_ism_tree::cli::evenlySpaced;
+using asr_common::cli::evenlySpaced;
 
 RuntimeRow measure(const asr_ism::Demonstration& demonstration, const BenchmarkTree& learned,
                    std::size_t configurations, const PredictionBenchmarkSettings& settings) {
@@ -49,7 +49,7 @@ RuntimeRow measure(const asr_ism::Demonstration& demonstration, const BenchmarkT
     double best = std::numeric_limits<double>::infinity();
     for (int repetition = 0; repetition < std::max(1, settings.repetitions); ++repetition) {
       std::vector<ObjectPrediction> predictions;
-      best = std::min(best, asr_ism_tree::cli::millisecondsOf(
+      best = std::min(best, asr_common::cli::millisecondsOf(
                                 [&] { predictions = predictor.predict(bare, options); }));
       if (predictions.size() != row.objects)
         throw std::logic_error("benchmark: not every object of the scene was predicted");
@@ -57,8 +57,8 @@ RuntimeRow measure(const asr_ism::Demonstration& demonstration, const BenchmarkT
     fastest.push_back(best);
   }
   row.instances = fastest.size();
-  row.median_ms = asr_ism_tree::cli::median(fastest);
-  row.max_ms = asr_ism_tree::cli::maximum(fastest);
+  row.median_ms = asr_common::cli::median(fastest);
+  row.max_ms = asr_common::cli::maximum(fastest);
   return row;
 }
 
@@ -76,7 +76,7 @@ std::vector<RuntimeRow> benchmarkKitchenRuntime(const std::string& recordings,
                                                 const PredictionBenchmarkSettings& settings,
                                                 std::ostream& progress) {
   std::vector<RuntimeRow> rows;
-  for (const asr_ism_tree::cli::KitchenScene& kitchen_scene : asr_ism_tree::cli::kitchenScenes()) {
+  for (const asr_common::cli::KitchenScene& kitchen_scene : asr_common::cli::kitchenScenes()) {
     progress << "  " << kitchen_scene.scene << std::flush;
     const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
         recordings + "/" + kitchen_scene.file, kitchen_scene.scene);

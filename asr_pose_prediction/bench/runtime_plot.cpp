@@ -1,14 +1,14 @@
 #include "runtime_plot.hpp"
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism_tree/cli/line_plot.hpp"
+#include "asr_common/cli/line_plot.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_pose_prediction::bench {
 
 void plotSyntheticRuntime(const std::vector<RuntimeRow>& rows, const std::string& path) {
   if (rows.empty())
-    throw asr_ism::InputError(path + ": no synthetic runtimes to plot (--no-synthetic?)");
-  asr_ism_tree::cli::LinePlot plot;
+    throw asr_common::InputError(path + ": no synthetic runtimes to plot (--no-synthetic?)");
+  asr_common::cli::LinePlot plot;
   plot.title = "Pose prediction with ISM trees: " + std::to_string(rows.front().samples) +
                " poses of every object of a synthetic scene";
   plot.x_label = "objects in the scene";
@@ -16,7 +16,7 @@ void plotSyntheticRuntime(const std::vector<RuntimeRow>& rows, const std::string
   int colour = 1;
   for (std::size_t steps : syntheticStepCounts()) {
     for (const char* topology : {"complete", "star"}) {
-      asr_ism_tree::cli::PlotCurve curve;
+      asr_common::cli::PlotCurve curve;
       curve.title = std::to_string(steps) + " steps, " + topology;
       curve.colour = colour;
       curve.dashed = std::string(topology) == "star";
@@ -28,7 +28,7 @@ void plotSyntheticRuntime(const std::vector<RuntimeRow>& rows, const std::string
     }
     ++colour;
   }
-  asr_ism_tree::cli::drawLinePlot(plot, path);
+  asr_common::cli::drawLinePlot(plot, path);
 }
 
 }  // namespace asr_pose_prediction::bench

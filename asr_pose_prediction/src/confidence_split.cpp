@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_pose_prediction {
 
@@ -16,8 +16,8 @@ std::vector<std::size_t> splitByConfidence(std::size_t total,
   double sum = 0.0;
   for (double confidence : confidences) {
     if (!std::isfinite(confidence) || confidence < 0.0) {
-      throw asr_ism::InputError("instance confidence " + std::to_string(confidence) +
-                                " cannot weight predicted poses (must be finite and >= 0)");
+      throw asr_common::InputError("instance confidence " + std::to_string(confidence) +
+                                   " cannot weight predicted poses (must be finite and >= 0)");
     }
     sum += confidence;
   }

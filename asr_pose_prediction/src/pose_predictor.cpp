@@ -4,12 +4,12 @@
 #include <map>
 #include <utility>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_pose_prediction/confidence_split.hpp"
 
 namespace asr_pose_prediction {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 
 std::mt19937 predictionEngine(std::uint32_t seed, std::size_t object, std::size_t stream) {
   // seed_seq's mixing and mt19937's seeding from it are fixed by the standard.
@@ -73,7 +73,7 @@ std::vector<Pose> PosePredictor::predictObject(const Pose& scene_pose, std::size
   for (std::size_t i = 0; i < samples; ++i) {
     Pose pose = scene_pose;
     for (std::size_t sampler : steps)
-      pose = asr_ism::compose(pose, samplers_[sampler].sample(engine));
+      pose = asr_common::compose(pose, samplers_[sampler].sample(engine));
     poses.push_back(pose);
   }
   return poses;

@@ -2,7 +2,7 @@
 
 #include <deque>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_pose_prediction {
 
@@ -39,8 +39,8 @@ std::vector<PredictionPath> shortestPredictionPaths(const IsmTree& tree) {
   }
   for (std::size_t object = 0; object < objects.size(); ++object) {
     if (!found[object]) {
-      throw asr_ism::InputError("scene '" + tree.scene + "': object " + objects[object].toString() +
-                                " is not a leaf of any ISM");
+      throw asr_common::InputError("scene '" + tree.scene + "': object " +
+                                   objects[object].toString() + " is not a leaf of any ISM");
     }
   }
   return paths;

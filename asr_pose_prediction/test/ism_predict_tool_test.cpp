@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
+#include "asr_common/testing/tool_run.hpp"
 #include "asr_ism/configuration_file.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
-#include "asr_ism/testing/tool_run.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 
@@ -25,10 +25,10 @@
 namespace asr_pose_prediction {
 namespace {
 
-using asr_ism::testing::expectInputError;
-using asr_ism::testing::expectSuccess;
-using asr_ism::testing::TempDir;
-using asr_ism::testing::ToolRun;
+using asr_common::testing::expectInputError;
+using asr_common::testing::expectSuccess;
+using asr_common::testing::TempDir;
+using asr_common::testing::ToolRun;
 using nlohmann::json;
 
 class IsmPredictTool : public ::testing::Test {
@@ -36,7 +36,7 @@ class IsmPredictTool : public ::testing::Test {
   void SetUp() override {
     REQUIRE_RECORDINGS();
     demonstration_ = asr_ism::sqlite::readDemonstration(
-        asr_ism::testing::recording("story_2.sqlite"), "Brot_Regal");
+        asr_common::testing::recording("story_2.sqlite"), "Brot_Regal");
     const asr_ism_tree::IsmTree tree = asr_ism_tree::generateIsmTree(
         demonstration_, asr_ism_tree::RelationTopology::complete(demonstration_.objects()), {});
     model_ = dir_.file("model.sqlite");
@@ -45,8 +45,8 @@ class IsmPredictTool : public ::testing::Test {
 
   // Recorded set `step` without the objects of the types in `left_out`, as a YAML objects file.
   std::string objectsFile(std::size_t step, const std::set<std::string>& left_out) {
-    asr_ism::Configuration kept;
-    for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(step)) {
+    asr_common::Configuration kept;
+    for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(step)) {
       if (!left_out.count(estimate.key.type))
         kept.push_back(estimate);
     }
@@ -56,7 +56,7 @@ class IsmPredictTool : public ::testing::Test {
   }
 
   ToolRun predict(const std::vector<std::string>& arguments) {
-    return asr_ism::testing::runTool(ISM_PREDICT_TOOL, dir_, arguments);
+    return asr_common::testing::runTool(ISM_PREDICT_TOOL, dir_, arguments);
   }
 
   TempDir dir_{"asr_ism_predict_tool"};
@@ -65,8 +65,8 @@ class IsmPredictTool : public ::testing::Test {
 };
 
 TEST_F(IsmPredictTool, PredictsTheLeftOutObjectsAsJson) {
-  const asr_ism::Configuration full = demonstration_.configuration(10);
-  const asr_ism::ObjectEstimate left_out = full.front();
+  const asr_common::Configuration full = demonstration_.configuration(10);
+  const asr_common::ObjectEstimate left_out = full.front();
   const std::string objects = objectsFile(10, {left_out.key.type});
 
   const ToolRun run = predict({"--model", model_, "--scene", "Brot_Regal", "--objects", objects,
@@ -105,7 +105,7 @@ TEST_F(IsmPredictTool, PredictsTheLeftOutObjectsAsJson) {
 }
 
 TEST_F(IsmPredictTool, SummaryGivesMeanAndSpreadPerObject) {
-  const asr_ism::Configuration full = demonstration_.configuration(20);
+  const asr_common::Configuration full = demonstration_.configuration(20);
   const std::string objects = objectsFile(20, {full[0].key.type, full[1].key.type});
   const ToolRun run =
       predict({"--model", model_, "--scene", "Brot_Regal", "--objects", objects, "--summary"});
@@ -131,8 +131,8 @@ TEST_F(IsmPredictTool, ASceneWithoutATreeIsNamed) {
 
 TEST_F(IsmPredictTool, NoInstanceIsAnErrorNotAnEmptySuccess) {
   // Clutter only: objects of types the scene does not have.
-  asr_ism::Configuration clutter;
-  for (asr_ism::ObjectEstimate estimate : demonstration_.configuration(0)) {
+  asr_common::Configuration clutter;
+  for (asr_common::ObjectEstimate estimate : demonstration_.configuration(0)) {
     estimate.key.type = "Clutter_" + estimate.key.type;
     clutter.push_back(estimate);
   }

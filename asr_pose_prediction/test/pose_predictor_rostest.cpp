@@ -12,11 +12,11 @@
 #include <memory>
 #include <set>
 
+#include "asr_common/child_process.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/rostest_support.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/node_process.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
-#include "asr_ism/testing/rostest_support.hpp"
-#include "asr_ism/testing/temp_dir.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
@@ -25,21 +25,21 @@
 namespace asr_pose_prediction {
 namespace {
 
-using asr_ism::testing::NodeProcess;
-using asr_ism::testing::TempDir;
-using asr_ism::testing::waitFor;
+using asr_common::ChildProcess;
+using asr_common::testing::TempDir;
+using asr_common::testing::waitFor;
 
 class PosePredictorNodeTest : public ::testing::Test {
  protected:
   void SetUp() override {
     REQUIRE_RECORDINGS();
-    demonstration_ =
-        asr_ism::sqlite::readDemonstration(asr_ism::testing::recording("story_1.sqlite"), "gedeck");
+    demonstration_ = asr_ism::sqlite::readDemonstration(
+        asr_common::testing::recording("story_1.sqlite"), "gedeck");
     tree_ = asr_ism_tree::generateIsmTree(
         demonstration_, asr_ism_tree::RelationTopology::complete(demonstration_.objects()), {});
     const std::string model = dir_.file("gedeck.sqlite");
     asr_ism_tree::sqlite::saveIsmTree(model, tree_, "test");
-    node_ = std::make_unique<NodeProcess>(
+    node_ = std::make_unique<ChildProcess>(
         std::string(ASR_NODE_DIR) + "/pose_predictor",
         std::vector<std::string>{"__name:=pose_predictor", "_model_files:=" + model,
                                  "_samples:=50"});
@@ -49,7 +49,7 @@ class PosePredictorNodeTest : public ::testing::Test {
 
   // The instance of recorded set `set` without the objects of `left_out` types, as a message.
   asr_msgs::SceneInstance instanceWithout(std::size_t set, const std::set<std::string>& left_out) {
-    asr_ism::Configuration configuration;
+    asr_common::Configuration configuration;
     for (const auto& estimate : demonstration_.configuration(set)) {
       if (!left_out.count(estimate.key.type))
         configuration.push_back(estimate);
@@ -64,7 +64,7 @@ class PosePredictorNodeTest : public ::testing::Test {
   TempDir dir_{"asr_pose_predictor_rostest"};
   asr_ism::Demonstration demonstration_;
   asr_ism_tree::IsmTree tree_;
-  std::unique_ptr<NodeProcess> node_;
+  std::unique_ptr<ChildProcess> node_;
   ros::NodeHandle handle_;
   ros::ServiceClient predict_;
 };
@@ -90,7 +90,7 @@ TEST_F(PosePredictorNodeTest, ServicePredictsTheObjectsLeftOut) {
   EXPECT_EQ(predicted, (std::set<std::string>{cup, plate}));
 
   // The true pose of a left-out object is among its predictions, to a few centimetres.
-  const asr_ism::ObjectEstimate truth = demonstration_.configuration(5)[0];
+  const asr_common::ObjectEstimate truth = demonstration_.configuration(5)[0];
   for (const auto& object : cloud.objects) {
     if (object.type != truth.key.type)
       continue;
@@ -154,5 +154,5 @@ TEST_F(PosePredictorNodeTest, NothingToPredictFromIsSaid) {
 }  // namespace asr_pose_prediction
 
 int main(int argc, char** argv) {
-  return asr_ism::testing::runRostests(argc, argv, "pose_predictor_rostest");
+  return asr_common::testing::runRostests(argc, argv, "pose_predictor_rostest");
 }

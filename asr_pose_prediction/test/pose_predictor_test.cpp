@@ -11,16 +11,16 @@
 #include <string>
 #include <vector>
 
+#include "asr_common/testing/input_error_of.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 
 namespace asr_pose_prediction {
 namespace {
 
-using asr_ism::Configuration;
-using asr_ism::testing::inputErrorOf;
+using asr_common::Configuration;
+using asr_common::testing::inputErrorOf;
 using asr_ism_tree::RelationTopology;
 using asr_ism_tree::TreeRecognizer;
 
@@ -44,7 +44,7 @@ const SyntheticScene& scene() {
 
 Configuration without(Configuration configuration, const std::set<std::string>& types) {
   configuration.erase(std::remove_if(configuration.begin(), configuration.end(),
-                                     [&](const asr_ism::ObjectEstimate& estimate) {
+                                     [&](const asr_common::ObjectEstimate& estimate) {
                                        return types.count(estimate.key.type) > 0;
                                      }),
                       configuration.end());
@@ -99,7 +99,7 @@ TEST(PosePredictor, PredictionsFromAMissingObjectsStepComeCloseToWhereItWas) {
   // reproduces its pose up to the recognition's own estimate of the scene's pose.
   const PosePredictor predictor(scene().tree);
   const Configuration full = scene().step(11);
-  const asr_ism::ObjectEstimate truth = full[2];
+  const asr_common::ObjectEstimate truth = full[2];
   const std::vector<SceneInstance> instances = recognize(without(full, {truth.key.type}));
   ASSERT_FALSE(instances.empty());
   PredictionOptions options;
@@ -120,8 +120,8 @@ TEST(PosePredictor, PredictionsMoveWithARotatedAndShiftedScene) {
   const Pose motion(Eigen::Vector3d(2.5, -1.25, 0.3),
                     Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ())));
   Configuration moved = original;
-  for (asr_ism::ObjectEstimate& estimate : moved)
-    estimate.pose = asr_ism::compose(motion, estimate.pose);
+  for (asr_common::ObjectEstimate& estimate : moved)
+    estimate.pose = asr_common::compose(motion, estimate.pose);
 
   PredictionOptions options;
   options.samples = 50;
@@ -132,9 +132,9 @@ TEST(PosePredictor, PredictionsMoveWithARotatedAndShiftedScene) {
   ASSERT_EQ(after.size(), 1u);
   ASSERT_EQ(before[0].poses.size(), after[0].poses.size());
   for (std::size_t i = 0; i < before[0].poses.size(); ++i) {
-    const Pose expected = asr_ism::compose(motion, before[0].poses[i]);
+    const Pose expected = asr_common::compose(motion, before[0].poses[i]);
     EXPECT_LT((after[0].poses[i].position - expected.position).norm(), 1e-9) << "pose " << i;
-    EXPECT_LT(asr_ism::angleBetween(after[0].poses[i].orientation, expected.orientation), 1e-9)
+    EXPECT_LT(asr_common::angleBetween(after[0].poses[i].orientation, expected.orientation), 1e-9)
         << "pose " << i;
   }
 }
@@ -167,10 +167,10 @@ TEST(PosePredictor, PosesAreSplitAmongTheBestInstancesByConfidence) {
   // instances of different confidence, both lacking `left_out`.
   Configuration configuration = without(scene().step(4), {left_out});
   const Pose far(Eigen::Vector3d(20.0, 0.0, 0.0), Eigen::Quaterniond::Identity());
-  for (const asr_ism::ObjectEstimate& estimate :
+  for (const asr_common::ObjectEstimate& estimate :
        without(scene().step(4), {left_out, scene().tree.objects()[2].type})) {
-    asr_ism::ObjectEstimate copy = estimate;  // the same object keys again
-    copy.pose = asr_ism::compose(far, estimate.pose);
+    asr_common::ObjectEstimate copy = estimate;  // the same object keys again
+    copy.pose = asr_common::compose(far, estimate.pose);
     configuration.push_back(copy);
   }
   std::vector<SceneInstance> instances = recognize(configuration);
@@ -203,7 +203,7 @@ TEST(PosePredictor, BadInputIsNamed) {
             std::string::npos);
 
   options = {};
-  options.object = asr_ism::ObjectKey{"Teapot", "0"};
+  options.object = asr_common::ObjectKey{"Teapot", "0"};
   const std::string unknown = inputErrorOf([&] { predictor.predict(instances, options); });
   EXPECT_NE(unknown.find("Teapot"), std::string::npos) << unknown;
 

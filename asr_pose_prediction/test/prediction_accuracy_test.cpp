@@ -11,9 +11,9 @@
 #include <ostream>
 #include <vector>
 
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
-#include "asr_ism/testing/recordings_skip.hpp"
 #include "asr_ism_tree/star_center.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 
@@ -48,7 +48,7 @@ TEST_P(LeaveOneOut, NearestPredictedPoseIsWithinFiveCentimetresAndFifteenDegrees
   REQUIRE_RECORDINGS();
   const Recording& recording = GetParam();
   const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
-      asr_ism::testing::recording(recording.file), recording.scene);
+      asr_common::testing::recording(recording.file), recording.scene);
   const auto& objects = demonstration.objects();
   const RelationTopology topology =
       recording.complete
@@ -62,7 +62,7 @@ TEST_P(LeaveOneOut, NearestPredictedPoseIsWithinFiveCentimetresAndFifteenDegrees
   std::vector<double> angles;
   std::size_t without_instance = 0;
   for (std::size_t step = 0; step < demonstration.stepCount(); ++step) {
-    const asr_ism::Configuration configuration = demonstration.configuration(step);
+    const asr_common::Configuration configuration = demonstration.configuration(step);
     if (configuration.size() < 2)
       continue;
     for (std::size_t left_out = 0; left_out < configuration.size(); ++left_out) {
@@ -103,7 +103,7 @@ TEST(NearestPoseError, MeasuresTheNearestPositionAndTheSmallestAngle) {
   EXPECT_NEAR(error.angle_at_nearest, 0.5, 1e-12);
   EXPECT_NEAR(error.smallest_angle, 0.0, 1e-12);
   EXPECT_NE(
-      asr_ism::testing::inputErrorOf([&] { nearestPoseError(truth, {}); }).find("no predicted"),
+      asr_common::testing::inputErrorOf([&] { nearestPoseError(truth, {}); }).find("no predicted"),
       std::string::npos);
 }
 

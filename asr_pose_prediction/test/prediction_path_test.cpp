@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "asr_common/testing/input_error_of.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 
 namespace asr_pose_prediction {
@@ -98,7 +98,7 @@ TEST(PredictionPath, AnObjectWithoutALeafIsNamed) {
   ASSERT_EQ(deepest.back().object.toString(), "object_3:0");
   deepest.pop_back();
   const std::string message =
-      asr_ism::testing::inputErrorOf([&] { shortestPredictionPaths(tree); });
+      asr_common::testing::inputErrorOf([&] { shortestPredictionPaths(tree); });
   EXPECT_NE(message.find("object_3:0"), std::string::npos) << message;
   EXPECT_NE(message.find("chain"), std::string::npos) << message;
 }

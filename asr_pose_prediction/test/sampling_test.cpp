@@ -6,20 +6,20 @@
 #include <string>
 #include <vector>
 
+#include "asr_common/testing/input_error_of.hpp"
 #include "asr_ism/portable_random.hpp"
-#include "asr_ism/testing/input_error_of.hpp"
 #include "asr_pose_prediction/confidence_split.hpp"
 #include "asr_pose_prediction/relation_sampler.hpp"
 
 namespace asr_pose_prediction {
 namespace {
 
-using asr_ism::testing::inputErrorOf;
+using asr_common::testing::inputErrorOf;
 
 asr_ism::RelativePose relative(double x, std::uint32_t steps) {
   asr_ism::RelativePose pose;
   pose.reference_in_member =
-      asr_ism::Pose(Eigen::Vector3d(x, 0, 0), Eigen::Quaterniond::Identity());
+      asr_common::Pose(Eigen::Vector3d(x, 0, 0), Eigen::Quaterniond::Identity());
   pose.step_count = steps;
   return pose;
 }

@@ -3,19 +3,19 @@
 #include <iostream>
 #include <limits>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/cli/timing.hpp"
+#include "asr_common/input_error.hpp"
+#include "asr_common/object_name.hpp"
 #include "asr_ism_tree/cli/configuration_source.hpp"
-#include "asr_ism_tree/cli/object_lookup.hpp"
-#include "asr_ism_tree/cli/timing.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "prediction_output.hpp"
 
 namespace asr_pose_prediction::tools {
 
-using asr_ism_tree::cli::CommandLine;
-using asr_ism_tree::cli::UsageError;
+using asr_common::cli::CommandLine;
+using asr_common::cli::UsageError;
 
 namespace {
 
@@ -45,23 +45,24 @@ int runPredict(const std::vector<std::string>& arguments) {
   const asr_ism_tree::IsmTree tree = asr_ism_tree::sqlite::loadIsmTree(model_path, scene);
   const PosePredictor predictor(tree);
   if (options.has("object")) {
-    prediction_options.object = tree.objects()[asr_ism_tree::cli::findObject(
+    prediction_options.object = tree.objects()[asr_common::resolveObjectName(
         options.required("object"), tree.objects(), "--object")];
   }
-  const asr_ism::Configuration configuration = asr_ism_tree::cli::loadConfiguration(options, scene);
+  const asr_common::Configuration configuration =
+      asr_ism_tree::cli::loadConfiguration(options, scene);
 
   const asr_ism_tree::TreeRecognizer recognizer(tree);
   std::vector<SceneInstance> instances = recognizer.recognize(configuration);
   if (instances.empty()) {
-    throw asr_ism::InputError("no instance of scene '" + scene + "' found in " + sourceOf(options) +
-                              ", so there is nothing to predict from");
+    throw asr_common::InputError("no instance of scene '" + scene + "' found in " +
+                                 sourceOf(options) + ", so there is nothing to predict from");
   }
   PredictionReport report;
   report.scene = scene;
   report.samples = prediction_options.samples;
   report.several_instances = prediction_options.instances > 1;
   report.summary = options.flag("summary");
-  report.runtime_ms = asr_ism_tree::cli::millisecondsOf(
+  report.runtime_ms = asr_common::cli::millisecondsOf(
       [&] { report.predictions = predictor.predict(instances, prediction_options); });
   instances.resize(std::min(instances.size(), prediction_options.instances));
   report.instances = instances;

@@ -1,6 +1,7 @@
-// `asr ism predict ...` (the executable ism_predict): recognise a scene, predict its missing objects.
+// `asr ism predict ...` (the executable ism_predict): recognise a scene, predict its missing
+// objects.
+#include "asr_common/cli/single_command_main.hpp"
 #include "predict_command.hpp"
-#include "single_command_main.hpp"
 
 namespace {
 
@@ -17,6 +18,6 @@ const char* const kUsage =
 
 int main(int argc, char** argv) {
   // Errors read "ism predict: ...", as the user typed `asr ism predict`.
-  return asr_pose_prediction::tools::runSingleCommandMain(
-      "ism", "predict", kUsage, asr_pose_prediction::tools::runPredict, argc, argv);
+  return asr_common::cli::runSingleCommandMain("ism", "predict", kUsage,
+                                               asr_pose_prediction::tools::runPredict, argc, argv);
 }

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "asr_ism/object.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "asr_ism/object.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism {
 

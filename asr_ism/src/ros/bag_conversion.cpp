@@ -8,7 +8,7 @@
 
 #include <vector>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/ros/estimate_intake.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 

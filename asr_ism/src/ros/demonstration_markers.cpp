@@ -1,8 +1,13 @@
 #include "asr_ism/ros/demonstration_markers.hpp"
 
-#include "asr_ism/ros/marker_style.hpp"
+#include "asr_common/ros/marker_style.hpp"
 
 namespace asr_ism::ros_interface {
+
+using asr_common::ros_interface::deleteAllMarker;
+using asr_common::ros_interface::hueColor;
+using asr_common::ros_interface::newMarker;
+using asr_common::ros_interface::pointOf;
 
 using visualization_msgs::Marker;
 

@@ -5,10 +5,14 @@
 #include <tf2/exceptions.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism::ros_interface {
+
+using asr_common::ros_interface::describe;
+using asr_common::ros_interface::fromEstimateMessage;
+using asr_common::ros_interface::fromPoseMessage;
 
 EstimateIntake::EstimateIntake(const tf2_ros::Buffer& buffer, std::string fixed_frame,
                                ros::Duration transform_timeout)

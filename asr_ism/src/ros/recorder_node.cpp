@@ -2,10 +2,17 @@
 
 #include <std_msgs/UInt32.h>
 
-#include "asr_ism/ros/callback_guard.hpp"
-#include "asr_ism/ros/node_parameters.hpp"
+#include "asr_common/ros/callback_guard.hpp"
+#include "asr_common/ros/node_parameters.hpp"
 
 namespace asr_ism::ros_interface {
+
+using asr_common::ros_interface::checkParameter;
+using asr_common::ros_interface::fixedFrameParameter;
+using asr_common::ros_interface::guardCallback;
+using asr_common::ros_interface::numberParameter;
+using asr_common::ros_interface::optionalParameter;
+using asr_common::ros_interface::requiredParameter;
 RecorderNode::RecorderNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
       private_node_(private_node),

@@ -5,12 +5,19 @@
 
 #include <algorithm>
 
+#include "asr_common/ros/node_parameters.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
 #include "asr_ism/ros/demonstration_markers.hpp"
-#include "asr_ism/ros/node_parameters.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 
 namespace asr_ism::ros_interface {
+
+using asr_common::ros_interface::fixedFrameParameter;
+using asr_common::ros_interface::numberParameter;
+using asr_common::ros_interface::optionalParameter;
+using asr_common::ros_interface::requiredParameter;
+using asr_common::ros_interface::stringListParameter;
+using asr_common::ros_interface::toEstimateMessage;
 
 ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : node_(node) {
   const auto file = requiredParameter<std::string>(private_node, "demonstration_file");

@@ -5,7 +5,7 @@
 #include <set>
 #include <vector>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
 
 namespace asr_ism::sqlite {

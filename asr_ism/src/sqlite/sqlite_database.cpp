@@ -2,7 +2,7 @@
 
 #include <sys/stat.h>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism::sqlite {
 

@@ -5,11 +5,11 @@
 #include <utility>
 #include <vector>
 
-#include "asr_ism/object.hpp"
+#include "asr_common/object.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::ObjectKey;
+using asr_common::ObjectKey;
 
 /// An undirected graph over a scene's objects whose edges are the spatial relations an ISM tree
 /// models. A value type: copy it, compare it, modify it.

@@ -3,12 +3,12 @@
 #include <string>
 #include <vector>
 
-#include "asr_ism/object.hpp"
+#include "asr_common/object.hpp"
 
 namespace asr_ism_tree {
 
-using asr_ism::ObjectKey;
-using asr_ism::Pose;
+using asr_common::ObjectKey;
+using asr_common::Pose;
 
 /// How a scene object present in the input fits an instance. An object that appears in several
 /// ISMs of the tree (as in a complete topology) is rated once per appearance; `similarity` is the

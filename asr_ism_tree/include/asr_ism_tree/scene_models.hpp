@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "asr_ism/object.hpp"
+#include "asr_common/object.hpp"
 #include "asr_ism_tree/ism_tree.hpp"
 #include "asr_ism_tree/scene_instance.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -31,7 +31,7 @@ class SceneModels {
   /// Instances of `scenes` (all loaded ones if empty) in `configuration`, best confidence first
   /// (ties by scene name, then as each tree ranks them); a scene named twice is answered once.
   /// Throws InputError for a scene not loaded.
-  std::vector<SceneInstance> recognize(const asr_ism::Configuration& configuration,
+  std::vector<SceneInstance> recognize(const asr_common::Configuration& configuration,
                                        const std::vector<std::string>& scenes = {}) const;
 
  private:

@@ -38,7 +38,7 @@ class TreeRecognizer {
                           asr_ism::ThreadPool* pool = nullptr);
 
   /// Instances sorted by confidence, best first. Throws InputError for a non-finite pose.
-  std::vector<SceneInstance> recognize(const asr_ism::Configuration& configuration,
+  std::vector<SceneInstance> recognize(const asr_common::Configuration& configuration,
                                        TreeRecognitionStats* stats = nullptr) const;
 
   const IsmTree& tree() const { return tree_; }

@@ -7,10 +7,8 @@
 // other scenes and tables in it stay; a scene learned again replaces its previous tree.
 #include <ros/ros.h>
 
-#include <iostream>
-
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/ros/node_parameters.hpp"
+#include "asr_common/ros/node_main.hpp"
+#include "asr_common/ros/node_parameters.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/star_center.hpp"
@@ -19,7 +17,7 @@
 
 namespace {
 
-using namespace asr_ism::ros_interface;
+using namespace asr_common::ros_interface;
 using namespace asr_ism_tree;
 
 void train(const ros::NodeHandle& parameters) {
@@ -83,14 +81,6 @@ void train(const ros::NodeHandle& parameters) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "trainer");
-  try {
-    train(ros::NodeHandle("~"));
-  } catch (const asr_ism::InputError& error) {
-    // std::cerr too: the node may fail before its ROS logging is connected.
-    ROS_FATAL("trainer: %s", error.what());
-    std::cerr << "trainer: " << error.what() << std::endl;
-    return 1;
-  }
-  return 0;
+  return asr_common::ros_interface::runNodeMain(argc, argv, "trainer",
+                                                [] { train(ros::NodeHandle("~")); });
 }

@@ -2,13 +2,13 @@
 
 #include <cmath>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/input_error.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
 
 namespace asr_ism_tree::ros_interface {
 
-using asr_ism::ros_interface::fromPoseMessage;
-using asr_ism::ros_interface::toPoseMessage;
+using asr_common::ros_interface::fromPoseMessage;
+using asr_common::ros_interface::toPoseMessage;
 
 asr_msgs::SceneInstance toSceneInstanceMessage(const SceneInstance& instance,
                                                const std_msgs::Header& header) {
@@ -44,10 +44,10 @@ asr_msgs::SceneInstance toSceneInstanceMessage(const SceneInstance& instance,
 SceneInstance fromSceneInstanceMessage(const asr_msgs::SceneInstance& message) {
   const std::string what = "scene instance of '" + message.scene + "'";
   if (message.scene.empty())
-    throw asr_ism::InputError("a scene instance without a scene name");
+    throw asr_common::InputError("a scene instance without a scene name");
   if (!(message.confidence >= 0.0 && message.confidence <= 1.0))
-    throw asr_ism::InputError(what + ": confidence " + std::to_string(message.confidence) +
-                              " is not in [0, 1]");
+    throw asr_common::InputError(what + ": confidence " + std::to_string(message.confidence) +
+                                 " is not in [0, 1]");
   SceneInstance instance;
   instance.scene = message.scene;
   instance.confidence = message.confidence;

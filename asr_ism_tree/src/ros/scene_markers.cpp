@@ -3,17 +3,17 @@
 #include <algorithm>
 #include <map>
 
-#include "asr_ism/ros/marker_style.hpp"
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/ros/marker_style.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
 
 namespace asr_ism_tree::ros_interface {
 namespace {
 
-using asr_ism::ros_interface::deleteAllMarker;
-using asr_ism::ros_interface::newMarker;
-using asr_ism::ros_interface::pointOf;
-using asr_ism::ros_interface::rgbaColor;
-using asr_ism::ros_interface::toPoseMessage;
+using asr_common::ros_interface::deleteAllMarker;
+using asr_common::ros_interface::newMarker;
+using asr_common::ros_interface::pointOf;
+using asr_common::ros_interface::rgbaColor;
+using asr_common::ros_interface::toPoseMessage;
 using visualization_msgs::Marker;
 
 constexpr double kSphereHeight = 0.4;  // metres above the instance's pose

@@ -4,19 +4,19 @@
 #include <std_msgs/UInt32.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/ros/callback_guard.hpp"
-#include "asr_ism/ros/node_parameters.hpp"
+#include "asr_common/input_error.hpp"
+#include "asr_common/ros/callback_guard.hpp"
+#include "asr_common/ros/node_parameters.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_ism_tree/ros/scene_markers.hpp"
 
 namespace asr_ism_tree::ros_interface {
 
-using asr_ism::ros_interface::checkParameter;
-using asr_ism::ros_interface::fixedFrameParameter;
-using asr_ism::ros_interface::numberParameter;
-using asr_ism::ros_interface::optionalParameter;
-using asr_ism::ros_interface::stringListParameter;
+using asr_common::ros_interface::checkParameter;
+using asr_common::ros_interface::fixedFrameParameter;
+using asr_common::ros_interface::numberParameter;
+using asr_common::ros_interface::optionalParameter;
+using asr_common::ros_interface::stringListParameter;
 
 SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
@@ -55,7 +55,7 @@ bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,
                                     asr_msgs::RecognizeScenes::Response& response) {
   std::lock_guard<std::mutex> lock(mutex_);
   const std::size_t rejected_before = intake_.rejectedCount();
-  asr_ism::Configuration configuration;
+  asr_common::Configuration configuration;
   for (const asr_msgs::ObjectEstimate& estimate : request.objects) {
     if (auto accepted = intake_.accept(estimate))
       configuration.push_back(*accepted);
@@ -74,7 +74,7 @@ bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,
     if (instances.empty())
       response.message = configuration.empty() ? "no valid object estimate in the request"
                                                : "no instance of the scenes asked for";
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     response.message = error.what();
   }
   return true;
@@ -90,7 +90,7 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
     models_ = std::move(loaded);
     model_files_ = files;
     response.success = true;
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     response.success = false;
     response.message = std::string(error.what()) + "; the previous models stay in use";
     ROS_WARN("scene_recognizer: reload failed: %s", response.message.c_str());
@@ -101,7 +101,7 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
 }
 
 void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
-  asr_ism::ros_interface::guardCallback("scene_recognizer: objects", [&] { store(message); });
+  asr_common::ros_interface::guardCallback("scene_recognizer: objects", [&] { store(message); });
 }
 
 void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
@@ -118,13 +118,13 @@ void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
 }
 
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
-  asr_ism::ros_interface::guardCallback("scene_recognizer: continuous recognition",
+  asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition",
                                         [&] { recognizeLatest(); });
 }
 
 void SceneRecognizerNode::recognizeLatest() {
   std::lock_guard<std::mutex> lock(mutex_);
-  const asr_ism::Configuration configuration =
+  const asr_common::Configuration configuration =
       latest_.current(ros::Time::now().toSec(), estimate_timeout_);
   asr_msgs::SceneInstanceList list;
   list.header.stamp = newest_stamp_;

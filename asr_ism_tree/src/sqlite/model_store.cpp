@@ -3,13 +3,13 @@
 #include <cmath>
 #include <ctime>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/input_limits.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
 
 namespace asr_ism_tree::sqlite {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 using asr_ism::sqlite::Database;
 using asr_ism::sqlite::Statement;
 using asr_ism::sqlite::Transaction;
@@ -284,11 +284,11 @@ void loadRelativePoses(Database& db, std::int64_t tree_id, const std::string& na
     const double step_count = pose_rows.columnNumber(9, row);
     if (!(step_count >= 1 && step_count <= 4294967295.0 && step_count == std::floor(step_count)))
       throw InputError(row + ": step_count must be a whole number >= 1");
-    asr_ism::Pose pose;
+    asr_common::Pose pose;
     pose.position = Eigen::Vector3d(values[0], values[1], values[2]);
     pose.orientation = Eigen::Quaterniond(values[3], values[4], values[5], values[6]);
     // Checked, but kept bit for bit as stored: a loaded tree recognises exactly like the learned.
-    asr_ism::validatedPose(pose.position, pose.orientation, row, 1e-9);
+    asr_common::validatedPose(pose.position, pose.orientation, row, 1e-9);
     members[m].relative_poses.push_back({pose, static_cast<std::uint32_t>(step_count)});
   }
 }

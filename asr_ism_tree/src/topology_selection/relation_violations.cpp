@@ -21,7 +21,7 @@ std::size_t pairIndex(std::size_t a, std::size_t b, std::size_t n) {
 }  // namespace
 
 RelationViolations::RelationViolations(const asr_ism::Demonstration& demonstration,
-                                       const std::vector<asr_ism::Configuration>& configurations,
+                                       const std::vector<asr_common::Configuration>& configurations,
                                        const asr_ism::IsmRecognitionParameters& parameters,
                                        double max_deficit)
     : object_count_(demonstration.objectCount()), configuration_count_(configurations.size()) {
@@ -33,10 +33,10 @@ RelationViolations::RelationViolations(const asr_ism::Demonstration& demonstrati
       asr_ism::sinHalfSquared(std::cos(0.5 * parameters.max_angle_deviation));
 
   // Each configuration's poses by object index (nullptr where the object is absent).
-  std::vector<std::vector<const asr_ism::Pose*>> poses(configurations.size(),
-                                                       std::vector<const asr_ism::Pose*>(n));
+  std::vector<std::vector<const asr_common::Pose*>> poses(configurations.size(),
+                                                          std::vector<const asr_common::Pose*>(n));
   for (std::size_t c = 0; c < configurations.size(); ++c) {
-    for (const asr_ism::ObjectEstimate& estimate : configurations[c]) {
+    for (const asr_common::ObjectEstimate& estimate : configurations[c]) {
       const int index = demonstration.indexOf(estimate.key);
       if (index >= 0)
         poses[c][index] = &estimate.pose;
@@ -44,11 +44,11 @@ RelationViolations::RelationViolations(const asr_ism::Demonstration& demonstrati
   }
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n; ++b) {
-      std::vector<asr_ism::Pose> demonstrated;
+      std::vector<asr_common::Pose> demonstrated;
       for (std::size_t step = 0; step < demonstration.stepCount(); ++step) {
         if (demonstration.pose(step, a) && demonstration.pose(step, b))
           demonstrated.push_back(
-              asr_ism::relativePose(*demonstration.pose(step, a), *demonstration.pose(step, b)));
+              asr_common::relativePose(*demonstration.pose(step, a), *demonstration.pose(step, b)));
       }
       Bits& bits = broken_[pairIndex(a, b, n)];
       for (std::size_t c = 0; c < configurations.size(); ++c) {
@@ -56,9 +56,9 @@ RelationViolations::RelationViolations(const asr_ism::Demonstration& demonstrati
           continue;  // a relation to an absent object cannot be broken
         // Comparing relative poses in a's frame is comparing where b is against where the
         // relation puts it: the rotation into a's frame keeps distances and angles.
-        const asr_ism::Pose seen = asr_ism::relativePose(*poses[c][a], *poses[c][b]);
+        const asr_common::Pose seen = asr_common::relativePose(*poses[c][a], *poses[c][b]);
         double best = 0.0;
-        for (const asr_ism::Pose& relative : demonstrated) {
+        for (const asr_common::Pose& relative : demonstrated) {
           const double similarity =
               asr_ism::positionCompliance((relative.position - seen.position).squaredNorm(),
                                           max_distance_squared) *

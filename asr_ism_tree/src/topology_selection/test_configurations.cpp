@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/portable_random.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
@@ -12,9 +12,9 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::Configuration;
+using asr_common::Configuration;
+using asr_common::InputError;
 using asr_ism::Demonstration;
-using asr_ism::InputError;
 
 std::string validScene(const std::string& scene) {
   return scene + ".valid";
@@ -27,7 +27,7 @@ std::string invalidScene(const std::string& scene) {
 // to the anchor at a random step in which both were seen.
 Configuration drawConfiguration(const Demonstration& demonstration, std::size_t step,
                                 std::size_t anchor, asr_ism::PortableRandom& random) {
-  const asr_ism::Pose& anchor_pose = *demonstration.pose(step, anchor);
+  const asr_common::Pose& anchor_pose = *demonstration.pose(step, anchor);
   Configuration configuration;
   configuration.push_back({demonstration.objects()[anchor], anchor_pose});
   for (std::size_t object = 0; object < demonstration.objectCount(); ++object) {
@@ -42,10 +42,10 @@ Configuration drawConfiguration(const Demonstration& demonstration, std::size_t 
       continue;  // never seen with the anchor: no relation to place it by
     const std::uint32_t source =
         together[random.below(static_cast<std::uint32_t>(together.size()))];
-    const asr_ism::Pose relative = asr_ism::relativePose(*demonstration.pose(source, anchor),
-                                                         *demonstration.pose(source, object));
-    asr_ism::Pose pose = asr_ism::compose(anchor_pose, relative);
-    pose.orientation = asr_ism::canonicalQuaternion(pose.orientation);
+    const asr_common::Pose relative = asr_common::relativePose(*demonstration.pose(source, anchor),
+                                                               *demonstration.pose(source, object));
+    asr_common::Pose pose = asr_common::compose(anchor_pose, relative);
+    pose.orientation = asr_common::canonicalQuaternion(pose.orientation);
     configuration.push_back({demonstration.objects()[object], pose});
   }
   return configuration;
@@ -91,7 +91,7 @@ TestConfigurations generateTestConfigurations(const Demonstration& demonstration
 }
 
 void writeTestConfigurations(const std::string& path, const TestConfigurations& tests,
-                             const std::vector<asr_ism::ObjectKey>& objects) {
+                             const std::vector<asr_common::ObjectKey>& objects) {
   if (std::filesystem::exists(path)) {
     const std::vector<std::string> scenes = asr_ism::sqlite::listRecordedScenes(path);
     for (const std::string& existing : {validScene(tests.scene), invalidScene(tests.scene)}) {
@@ -109,7 +109,7 @@ void writeTestConfigurations(const std::string& path, const TestConfigurations& 
     Demonstration stored(scene, objects);
     for (const Configuration& configuration : *configurations) {
       const std::size_t step = stored.addStep();
-      for (const asr_ism::ObjectEstimate& estimate : configuration)
+      for (const asr_common::ObjectEstimate& estimate : configuration)
         stored.setPose(step, static_cast<std::size_t>(stored.indexOf(estimate.key)), estimate.pose);
     }
     asr_ism::sqlite::appendDemonstration(path, stored);

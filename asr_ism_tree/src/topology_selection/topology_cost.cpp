@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 
 namespace asr_ism_tree {
 
@@ -19,12 +19,12 @@ TopologyCost::TopologyCost(const TopologyMeasures& star, const TopologyMeasures&
       work_high_(std::max(star.mean_work, complete.mean_work)),
       max_mean_work_(max_mean_work) {
   if (!std::isfinite(alpha) || !std::isfinite(beta) || alpha < 0 || beta < 0 || alpha + beta <= 0) {
-    throw asr_ism::InputError(
+    throw asr_common::InputError(
         "the cost weights alpha and beta must be >= 0, finite and not both 0");
   }
   if (!(valid_share >= 0.0 && valid_share <= 1.0))
-    throw asr_ism::InputError("the share of valid test configurations must be in [0, 1] (got " +
-                              std::to_string(valid_share) + ")");
+    throw asr_common::InputError("the share of valid test configurations must be in [0, 1] (got " +
+                                 std::to_string(valid_share) + ")");
 }
 
 double TopologyCost::normalised(double value, double low, double high) {

@@ -22,7 +22,7 @@ TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
   double total_ms = 0.0;
   const double max_work = max_mean_work > 0.0 ? max_mean_work * tests.size() : 0.0;
   // Recognises one configuration; true if it is accepted.
-  auto accepted = [&](const asr_ism::Configuration& configuration) {
+  auto accepted = [&](const asr_common::Configuration& configuration) {
     TreeRecognitionStats stats;
     const auto start = std::chrono::steady_clock::now();
     const auto instances = recognizer.recognize(configuration, &stats);

@@ -8,7 +8,7 @@
 #include <memory>
 #include <numeric>
 
-#include "asr_ism/input_error.hpp"
+#include "asr_common/input_error.hpp"
 #include "asr_ism/portable_random.hpp"
 #include "asr_ism/thread_pool.hpp"
 #include "asr_ism_tree/star_center.hpp"
@@ -20,7 +20,7 @@
 namespace asr_ism_tree {
 namespace {
 
-using asr_ism::InputError;
+using asr_common::InputError;
 using Clock = std::chrono::steady_clock;
 
 // A relation counts as broken below 0.95 similarity: about 2 cm or 7 degrees off everything

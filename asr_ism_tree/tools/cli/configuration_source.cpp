@@ -2,13 +2,16 @@
 
 #include <limits>
 
+#include "asr_common/input_error.hpp"
 #include "asr_ism/configuration_file.hpp"
-#include "asr_ism/input_error.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 
 namespace asr_ism_tree::cli {
 
-asr_ism::Configuration loadConfiguration(const CommandLine& options, const std::string& scene) {
+using asr_common::cli::UsageError;
+
+asr_common::Configuration loadConfiguration(const asr_common::cli::CommandLine& options,
+                                            const std::string& scene) {
   if (options.has("objects") == options.has("demo")) {
     throw UsageError{"give either --objects FILE or --demo DB --set K"};
   }
@@ -23,9 +26,9 @@ asr_ism::Configuration loadConfiguration(const CommandLine& options, const std::
   const long long set = options.integer("set", 0, 0, std::numeric_limits<long long>::max());
   const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(demo_path, scene);
   if (static_cast<std::size_t>(set) >= demonstration.stepCount()) {
-    throw asr_ism::InputError(demo_path + ": scene '" + scene + "' has " +
-                              std::to_string(demonstration.stepCount()) + " recorded sets; set " +
-                              std::to_string(set) + " does not exist (sets count from 0)");
+    throw asr_common::InputError(
+        demo_path + ": scene '" + scene + "' has " + std::to_string(demonstration.stepCount()) +
+        " recorded sets; set " + std::to_string(set) + " does not exist (sets count from 0)");
   }
   return demonstration.configuration(static_cast<std::size_t>(set));
 }

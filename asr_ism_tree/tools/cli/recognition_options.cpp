@@ -7,7 +7,10 @@
 
 namespace asr_ism_tree::cli {
 
-asr_ism::IsmRecognitionParameters recognitionParametersFrom(const CommandLine& options) {
+using asr_common::cli::UsageError;
+
+asr_ism::IsmRecognitionParameters recognitionParametersFrom(
+    const asr_common::cli::CommandLine& options) {
   asr_ism::IsmRecognitionParameters parameters;
   parameters.bin_size = options.number("bin-size", parameters.bin_size);
   const double max_angle_deg = options.number("max-angle-deg", 30.0);

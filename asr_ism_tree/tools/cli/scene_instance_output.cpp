@@ -4,7 +4,7 @@
 
 namespace asr_ism_tree::cli {
 
-nlohmann::ordered_json poseToJson(const asr_ism::Pose& pose) {
+nlohmann::ordered_json poseToJson(const asr_common::Pose& pose) {
   nlohmann::ordered_json json;
   json["position"] = {{"x", pose.position.x()}, {"y", pose.position.y()}, {"z", pose.position.z()}};
   json["orientation"] = {{"x", pose.orientation.x()},

@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "asr_ism/pose.hpp"
+#include "asr_common/pose.hpp"
 
 namespace asr_pose_prediction {
 
@@ -22,6 +22,6 @@ struct PoseCloudSummary {
 };
 
 /// Throws InputError for an empty cloud.
-PoseCloudSummary summarizePoseCloud(const std::vector<asr_ism::Pose>& poses);
+PoseCloudSummary summarizePoseCloud(const std::vector<asr_common::Pose>& poses);
 
 }  // namespace asr_pose_prediction

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "asr_ism/object.hpp"
+#include "asr_common/object.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "asr_pose_prediction/pose_predictor.hpp"
 
@@ -36,7 +36,7 @@ struct LeftOutPrediction {
 /// object of the predictor's scene.
 LeftOutPrediction predictLeftOutObject(const asr_ism_tree::TreeRecognizer& recognizer,
                                        const PosePredictor& predictor,
-                                       const asr_ism::Configuration& configuration,
+                                       const asr_common::Configuration& configuration,
                                        std::size_t left_out, std::size_t samples,
                                        std::uint32_t seed);
 

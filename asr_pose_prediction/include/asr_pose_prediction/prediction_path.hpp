@@ -7,8 +7,8 @@
 
 namespace asr_pose_prediction {
 
-using asr_ism::ObjectKey;
-using asr_ism::Pose;
+using asr_common::ObjectKey;
+using asr_common::Pose;
 using asr_ism_tree::IsmTree;
 
 /// One ISM on a prediction path and the member of it that leads on: the placeholder of the next

@@ -20,13 +20,13 @@ class RelationSampler {
   RelationSampler(const asr_ism::IsmMember& member, const std::string& what);
 
   /// One relative pose, member in reference frame. Uses no random number if there is only one.
-  const asr_ism::Pose& sample(std::mt19937& engine) const;
+  const asr_common::Pose& sample(std::mt19937& engine) const;
 
   std::size_t size() const { return member_in_reference_.size(); }
-  const asr_ism::Pose& pose(std::size_t index) const { return member_in_reference_[index]; }
+  const asr_common::Pose& pose(std::size_t index) const { return member_in_reference_[index]; }
 
  private:
-  std::vector<asr_ism::Pose> member_in_reference_;
+  std::vector<asr_common::Pose> member_in_reference_;
   std::vector<std::uint32_t> cumulative_steps_;  // inclusive prefix sums of step_count
 };
 

@@ -1,13 +1,13 @@
 #include "asr_pose_prediction/ros/pose_cloud_message.hpp"
 
-#include "asr_ism/ros/object_estimate_message.hpp"
+#include "asr_common/ros/object_estimate_message.hpp"
 
 namespace asr_pose_prediction::ros_interface {
 
 std::vector<asr_msgs::PredictedPoseCloud> toPoseCloudMessages(
     const std::vector<ObjectPrediction>& predictions, const std::vector<SceneInstance>& instances,
     const std_msgs::Header& header) {
-  using asr_ism::ros_interface::toPoseMessage;
+  using asr_common::ros_interface::toPoseMessage;
   std::vector<asr_msgs::PredictedPoseCloud> clouds;
   for (std::size_t rank = 0; rank < instances.size(); ++rank) {
     asr_msgs::PredictedPoseCloud cloud;

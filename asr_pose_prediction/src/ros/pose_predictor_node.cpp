@@ -2,19 +2,19 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include "asr_ism/input_error.hpp"
-#include "asr_ism/ros/callback_guard.hpp"
-#include "asr_ism/ros/node_parameters.hpp"
+#include "asr_common/input_error.hpp"
+#include "asr_common/ros/callback_guard.hpp"
+#include "asr_common/ros/node_parameters.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_pose_prediction/ros/pose_cloud_message.hpp"
 #include "asr_pose_prediction/ros/prediction_markers.hpp"
 
 namespace asr_pose_prediction::ros_interface {
 
-using asr_ism::ros_interface::checkParameter;
-using asr_ism::ros_interface::integerParameter;
-using asr_ism::ros_interface::optionalParameter;
-using asr_ism::ros_interface::stringListParameter;
+using asr_common::ros_interface::checkParameter;
+using asr_common::ros_interface::integerParameter;
+using asr_common::ros_interface::optionalParameter;
+using asr_common::ros_interface::stringListParameter;
 
 PosePredictorNode::PosePredictorNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node) {
@@ -96,7 +96,7 @@ bool PosePredictorNode::predictService(asr_msgs::PredictPoses::Request& request,
     for (const asr_msgs::SceneInstance& instance : *source)
       instances.push_back(asr_ism_tree::ros_interface::fromSceneInstanceMessage(instance));
     response.clouds = predict(instances, options, header, response.message);
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     response.clouds.clear();
     response.message = error.what();
   }
@@ -106,7 +106,7 @@ bool PosePredictorNode::predictService(asr_msgs::PredictPoses::Request& request,
 }
 
 void PosePredictorNode::receive(const asr_msgs::SceneInstanceList& list) {
-  asr_ism::ros_interface::guardCallback("pose_predictor: scene_instances",
+  asr_common::ros_interface::guardCallback("pose_predictor: scene_instances",
                                         [&] { predictLatest(list); });
 }
 
@@ -123,7 +123,7 @@ void PosePredictorNode::predictLatest(const asr_msgs::SceneInstanceList& list) {
       instances.push_back(asr_ism_tree::ros_interface::fromSceneInstanceMessage(instance));
     std::string message;
     publish(predict(instances, defaults_, list.header, message));
-  } catch (const asr_ism::InputError& error) {
+  } catch (const asr_common::InputError& error) {
     ROS_WARN_THROTTLE(5.0, "pose_predictor: %s", error.what());
   }
 }

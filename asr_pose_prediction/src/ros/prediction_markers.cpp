@@ -4,19 +4,19 @@
 #include <cstdint>
 #include <map>
 
-#include "asr_ism/ros/marker_style.hpp"
+#include "asr_common/ros/marker_style.hpp"
 
 namespace asr_pose_prediction::ros_interface {
 
-using asr_ism::ros_interface::deleteAllMarker;
-using asr_ism::ros_interface::newMarker;
+using asr_common::ros_interface::deleteAllMarker;
+using asr_common::ros_interface::newMarker;
 
 std_msgs::ColorRGBA objectTypeColor(const std::string& type, double alpha) {
   // FNV-1a: a hash that is the same on every platform and run (std::hash is not).
   std::uint32_t hash = 2166136261u;
   for (unsigned char c : type)
     hash = (hash ^ c) * 16777619u;
-  return asr_ism::ros_interface::hueColor((hash % 360u) / 360.0, alpha);
+  return asr_common::ros_interface::hueColor((hash % 360u) / 360.0, alpha);
 }
 
 visualization_msgs::MarkerArray predictionMarkers(

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "asr_ism/object.hpp"
+#include "asr_ism/common_types.hpp"
 
 namespace asr_ism::ros_interface {
 

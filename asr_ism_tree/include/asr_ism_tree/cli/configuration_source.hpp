@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "asr_ism/object.hpp"
-#include "asr_ism_tree/cli/command_line.hpp"
+#include "asr_common/cli/command_line.hpp"
+#include "asr_common/object.hpp"
 
 namespace asr_ism_tree::cli {
 
@@ -11,6 +11,7 @@ namespace asr_ism_tree::cli {
 /// recorded set (0-based, by id) of `scene` with `--demo DB --set K`. Throws UsageError for
 /// neither or both, InputError naming the file for a bad file or a set that does not exist.
 /// The command must declare the options objects, demo and set.
-asr_ism::Configuration loadConfiguration(const CommandLine& options, const std::string& scene);
+asr_common::Configuration loadConfiguration(const asr_common::cli::CommandLine& options,
+                                            const std::string& scene);
 
 }  // namespace asr_ism_tree::cli

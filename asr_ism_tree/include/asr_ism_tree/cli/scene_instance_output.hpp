@@ -9,7 +9,7 @@
 namespace asr_ism_tree::cli {
 
 /// {"position": {x, y, z}, "orientation": {x, y, z, w}}, geometry_msgs field names.
-nlohmann::ordered_json poseToJson(const asr_ism::Pose& pose);
+nlohmann::ordered_json poseToJson(const asr_common::Pose& pose);
 
 /// One instance as in the `recognize --json` output.
 nlohmann::ordered_json instanceToJson(const SceneInstance& instance);

@@ -20,7 +20,7 @@ namespace asr_ism_tree {
 class RelationViolations {
  public:
   RelationViolations(const asr_ism::Demonstration& demonstration,
-                     const std::vector<asr_ism::Configuration>& configurations,
+                     const std::vector<asr_common::Configuration>& configurations,
                      const asr_ism::IsmRecognitionParameters& parameters, double max_deficit);
 
   std::size_t configurationCount() const { return configuration_count_; }

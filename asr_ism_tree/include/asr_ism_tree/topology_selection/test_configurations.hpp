@@ -13,8 +13,8 @@ namespace asr_ism_tree {
 /// the tree of the complete topology with confidence >= the threshold) and invalid ones.
 struct TestConfigurations {
   std::string scene;
-  std::vector<asr_ism::Configuration> valid;
-  std::vector<asr_ism::Configuration> invalid;
+  std::vector<asr_common::Configuration> valid;
+  std::vector<asr_common::Configuration> invalid;
   std::size_t size() const { return valid.size() + invalid.size(); }
 };
 
@@ -34,7 +34,7 @@ TestConfigurations generateTestConfigurations(const asr_ism::Demonstration& demo
 /// inspected with `asr ism recognize --demo path --set K`. Throws InputError if the file already
 /// holds test configurations of the scene. `objects` are the scene's objects.
 void writeTestConfigurations(const std::string& path, const TestConfigurations& tests,
-                             const std::vector<asr_ism::ObjectKey>& objects);
+                             const std::vector<asr_common::ObjectKey>& objects);
 
 /// Reads what writeTestConfigurations stored. Throws InputError naming the file if it has no
 /// test configurations of `scene`.
