@@ -9,8 +9,8 @@
 #include <limits>
 #include <random>
 
-#include "asr_ism/ism_learning.hpp"
 #include "asr_common/testing/input_error_of.hpp"
+#include "asr_ism/ism_learning.hpp"
 #include "asr_ism/voting_space.hpp"
 
 namespace asr_ism {

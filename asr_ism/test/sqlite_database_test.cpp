@@ -10,11 +10,11 @@
 #include <csignal>
 #include <filesystem>
 
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_common/testing/input_error_of.hpp"
-#include "asr_common/testing/temp_dir.hpp"
 
 namespace asr_ism::sqlite {
 namespace {

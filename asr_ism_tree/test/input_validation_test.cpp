@@ -6,13 +6,13 @@
 
 #include <random>
 
+#include "asr_common/testing/input_error_of.hpp"
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/input_limits.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_common/testing/input_error_of.hpp"
-#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism_tree/scene_models.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
@@ -21,11 +21,11 @@
 namespace asr_ism_tree {
 namespace {
 
+using asr_common::testing::inputErrorOf;
+using asr_common::testing::TempDir;
 using asr_ism::Demonstration;
 using asr_ism::Pose;
 using asr_ism::sqlite::Database;
-using asr_common::testing::inputErrorOf;
-using asr_common::testing::TempDir;
 
 // A demonstration of `objects` objects spread over up to `extent` metres, placed at `centre`.
 Demonstration spreadDemonstration(std::size_t objects, double extent, const Eigen::Vector3d& centre,

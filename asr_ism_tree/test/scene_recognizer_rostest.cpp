@@ -237,11 +237,12 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
     EXPECT_EQ(out_of_range.waitForExit(std::chrono::seconds(30)), 1) << parameter;
   }
   EXPECT_FALSE(std::filesystem::exists(dir.file("refused.sqlite")));
-  ChildProcess largest_seed(std::string(ASR_NODE_DIR) + "/trainer",
-                           {"__name:=trainer_largest_seed",
-                            "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
-                            "_model_file:=" + dir.file("largest_seed.sqlite"),
-                            "_scenes:=Getraenke_Regal", "_topology:=star", "_seed:=4294967295"});
+  ChildProcess largest_seed(
+      std::string(ASR_NODE_DIR) + "/trainer",
+      {"__name:=trainer_largest_seed",
+       "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
+       "_model_file:=" + dir.file("largest_seed.sqlite"), "_scenes:=Getraenke_Regal",
+       "_topology:=star", "_seed:=4294967295"});
   EXPECT_EQ(largest_seed.waitForExit(std::chrono::seconds(60)), 0);
   ChildProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
                    {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),

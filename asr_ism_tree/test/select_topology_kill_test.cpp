@@ -16,9 +16,9 @@
 #include <random>
 #include <thread>
 
+#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
-#include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/topology_file.hpp"
 #include "asr_ism_tree/tree_generation.hpp"

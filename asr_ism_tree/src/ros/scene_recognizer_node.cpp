@@ -119,7 +119,7 @@ void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
 
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
   asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition",
-                                        [&] { recognizeLatest(); });
+                                           [&] { recognizeLatest(); });
 }
 
 void SceneRecognizerNode::recognizeLatest() {

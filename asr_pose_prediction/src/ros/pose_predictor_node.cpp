@@ -107,7 +107,7 @@ bool PosePredictorNode::predictService(asr_msgs::PredictPoses::Request& request,
 
 void PosePredictorNode::receive(const asr_msgs::SceneInstanceList& list) {
   asr_common::ros_interface::guardCallback("pose_predictor: scene_instances",
-                                        [&] { predictLatest(list); });
+                                           [&] { predictLatest(list); });
 }
 
 void PosePredictorNode::predictLatest(const asr_msgs::SceneInstanceList& list) {
