@@ -7,6 +7,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <sys/stat.h>
+
 #include <csignal>
 #include <filesystem>
 
@@ -67,6 +69,60 @@ TEST(SqliteDatabase, AReaderRollsBackTheJournalOfAKilledWriter) {
           approximatelyEqual(*read.pose(step, object), *written.pose(step, object), 1e-12, 1e-12));
     }
   }
+}
+
+// The InputError message of a read-only Database(path) opened by a user who may not write the
+// file or its folder: as root, in a child process that drops to user nobody; otherwise with the
+// file and folder made read-only.
+std::string messageOfReaderWhoCannotWrite(const std::string& path, const std::string& folder) {
+  int channel[2];
+  if (pipe(channel) != 0)
+    return "no pipe";
+  const pid_t child = fork();
+  if (child == 0) {
+    close(channel[0]);
+    if (geteuid() == 0) {
+      if (setgid(65534) != 0 || setuid(65534) != 0)
+        _exit(3);
+    } else {
+      chmod(path.c_str(), 0444);
+      chmod(folder.c_str(), 0555);
+    }
+    std::string message = "no error";
+    try {
+      Database db(path, Database::Mode::kReadOnly);
+    } catch (const InputError& error) {
+      message = error.what();
+    }
+    if (write(channel[1], message.data(), message.size()) < 0)
+      _exit(4);
+    _exit(0);
+  }
+  close(channel[1]);
+  std::string message;
+  char buffer[512];
+  for (ssize_t n; (n = read(channel[0], buffer, sizeof buffer)) > 0;)
+    message.append(buffer, static_cast<std::size_t>(n));
+  close(channel[0]);
+  waitpid(child, nullptr, 0);
+  chmod(folder.c_str(), 0755);
+  chmod(path.c_str(), 0644);
+  return message;
+}
+
+TEST(SqliteDatabase, AReaderWhoMayNotRollBackSaysWhatToDo) {
+  TempDir dir("asr_sqlite_database");
+  const std::string path = dir.file("demo.sqlite");
+  appendDemonstration(path, makeBreakfastDemonstration(4));
+  killWriterInsideATransaction(path);
+  ASSERT_TRUE(std::filesystem::exists(path + "-journal"));
+  const std::string message = messageOfReaderWhoCannotWrite(path, dir.path());
+  EXPECT_NE(message.find(path + ": holds an unfinished write"), std::string::npos) << message;
+  EXPECT_NE(message.find(path + "-journal"), std::string::npos) << message;
+  EXPECT_NE(message.find("Keep the journal"), std::string::npos) << message;
+  // The journal is still there for a user who may write, and that user recovers the file.
+  ASSERT_TRUE(std::filesystem::exists(path + "-journal"));
+  EXPECT_EQ(readDemonstration(path, "breakfast").stepCount(), 60u);
 }
 
 TEST(SqliteDatabase, ANonDatabaseIsNamedAsSuch) {
