@@ -13,8 +13,10 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <random>
 
 #include "asr_common/child_process.hpp"
+#include "asr_common/ros/node_parameters.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/rostest_support.hpp"
@@ -252,6 +254,41 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
 
 }  // namespace
 }  // namespace asr_ism_tree
+
+TEST(NodeParameters, IntegersAreAcceptedExactlyWhenInRange) {
+  // Property over random values stored as roscpp stores them (int up to 32 bits, double beyond)
+  // and random ranges: accepted with their exact value iff in range, otherwise an InputError
+  // naming the parameter; never wrapped or truncated.
+  ros::NodeHandle node("~integer_parameters");
+  std::mt19937_64 random(3);
+  const long long edges[] = {0, -1, 1, 2147483647LL, 2147483648LL, 4294967295LL, 4294967303LL};
+  for (int trial = 0; trial < 300; ++trial) {
+    const long long value = trial % 2
+                                ? edges[random() % 7]
+                                : static_cast<long long>(random() % 10000000000ULL) - 5000000000LL;
+    if (value >= INT32_MIN && value <= INT32_MAX)
+      node.setParam("value", static_cast<int>(value));
+    else
+      node.setParam("value", static_cast<double>(value));
+    const long long a = edges[random() % 7], b = static_cast<long long>(random() % 5000000000ULL);
+    const long long min = std::min(a, b), max = std::max(a, b);
+    if (value >= min && value <= max) {
+      EXPECT_EQ(asr_common::ros_interface::integerParameter(node, "value", 0, min, max), value);
+    } else {
+      EXPECT_THROW(asr_common::ros_interface::integerParameter(node, "value", 0, min, max),
+                   asr_common::InputError)
+          << value << " in [" << min << ", " << max << "]";
+    }
+  }
+  node.setParam("value", 2.5);
+  EXPECT_THROW(asr_common::ros_interface::integerParameter(node, "value", 0, 0, 10),
+               asr_common::InputError);
+  node.setParam("value", std::string("7"));
+  EXPECT_THROW(asr_common::ros_interface::integerParameter(node, "value", 0, 0, 10),
+               asr_common::InputError);
+  node.deleteParam("value");
+  EXPECT_EQ(asr_common::ros_interface::integerParameter(node, "value", 42, 0, 10), 42);
+}
 
 int main(int argc, char** argv) {
   return asr_common::testing::runRostests(argc, argv, "scene_recognizer_rostest");
