@@ -3,9 +3,10 @@
 #include <fstream>
 #include <iostream>
 
-#include "asr_common/input_error.hpp"
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/input_error.hpp"
+#include "asr_ism_tree/topology_selection/topology_selection.hpp"
 #include "clutter_benchmark.hpp"
 #include "recognition_benchmark.hpp"
 #include "report.hpp"
@@ -31,9 +32,7 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   const CommandLine options(arguments, {"recordings", "threads", "synthetic-json"},
                             {"json", "no-synthetic", "no-clutter", "clutter-only"});
   BenchmarkSettings settings;
-  settings.threads = static_cast<unsigned>(options.integer("threads", 1));
-  if (settings.threads == 0)
-    throw UsageError{"--threads must be at least 1"};
+  settings.threads = static_cast<unsigned>(options.integer("threads", 1, 1, kMaxThreads));
   const bool json = options.flag("json");
   const std::string synthetic_json = options.optional("synthetic-json", "");
   // In JSON mode stdout carries only the scene array, so the synthetic rows need a file.
@@ -44,8 +43,8 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   const bool clutter_only = options.flag("clutter-only");
   std::vector<SceneRow> scene_rows;
   std::vector<ClutterRow> clutter_rows;
-  if (const auto recordings =
-          asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress)) {
+  if (const auto recordings = asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR,
+                                                                   "asr_bench", progress)) {
     progress << "kitchen scenes from " << *recordings << "\n";
     if (!clutter_only)
       scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);

@@ -5,6 +5,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "asr_common/input_error.hpp"
+#include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_ism_tree/ros/scene_markers.hpp"
@@ -13,6 +14,8 @@ namespace asr_ism_tree::ros_interface {
 
 using asr_common::ros_interface::checkParameter;
 using asr_common::ros_interface::fixedFrameParameter;
+using asr_common::ros_interface::integerParameter;
+using asr_common::ros_interface::numberParameter;
 using asr_common::ros_interface::optionalParameter;
 using asr_common::ros_interface::stringListParameter;
 
@@ -26,15 +29,12 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
                  "set to the model files to load (a list, or one file)");
   scenes_ = stringListParameter(private_node_, "scenes");
   const bool continuous = optionalParameter<bool>(private_node_, "continuous", true);
-  const double rate = optionalParameter<double>(private_node_, "rate", 10.0);
-  checkParameter(private_node_, "rate", rate > 0.0 && rate <= 1000.0, "in (0, 1000] Hz");
-  estimate_timeout_ = optionalParameter<double>(private_node_, "estimate_timeout", 5.0);
-  checkParameter(private_node_, "estimate_timeout", estimate_timeout_ >= 0.0,
-                 ">= 0 s (0: estimates never expire)");
-  const int max_estimates = optionalParameter<int>(private_node_, "max_estimates", 1000);
-  checkParameter(private_node_, "max_estimates", max_estimates >= 1,
-                 ">= 1 (requests with more estimates are refused)");
-  recognition_parameters_.max_estimates = static_cast<std::size_t>(max_estimates);
+  const double rate = numberParameter(private_node_, "rate", 10.0, 0.001, 1000.0);
+  // 0: estimates never expire.
+  estimate_timeout_ = numberParameter(private_node_, "estimate_timeout", 5.0, 0.0, 1e9);
+  // Requests with more estimates are refused with a message.
+  recognition_parameters_.max_estimates =
+      static_cast<std::size_t>(integerParameter(private_node_, "max_estimates", 1000, 1, 1000000));
   models_ = std::make_shared<const SceneModels>(
       SceneModels::load(model_files_, scenes_, recognition_parameters_));
 
@@ -111,6 +111,10 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
 }
 
 void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
+  asr_common::ros_interface::guardCallback("scene_recognizer: objects", [&] { store(message); });
+}
+
+void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   const std::size_t rejected_before = intake_.rejectedCount();
   for (const asr_msgs::ObjectEstimate& estimate : message.objects) {
@@ -124,6 +128,11 @@ void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
 }
 
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
+  asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition",
+                                           [&] { recognizeLatest(); });
+}
+
+void SceneRecognizerNode::recognizeLatest() {
   asr_common::Configuration configuration;
   std::shared_ptr<const SceneModels> models;
   asr_msgs::SceneInstanceList list;
@@ -135,13 +144,8 @@ void SceneRecognizerNode::tick(const ros::TimerEvent&) {
     list.header.frame_id = intake_.fixedFrame();
   }
   std::vector<SceneInstance> instances;
-  try {
-    if (!configuration.empty())
-      instances = models->recognize(configuration);
-  } catch (const asr_common::InputError& error) {
-    // Too many estimates (max_estimates): publish no instance rather than stop the node.
-    ROS_WARN_THROTTLE(5.0, "scene_recognizer: %s", error.what());
-  }
+  if (!configuration.empty())
+    instances = models->recognize(configuration);  // the guard reports what it refuses
   for (const SceneInstance& instance : instances)
     list.instances.push_back(toSceneInstanceMessage(instance, list.header));
   instances_publisher_.publish(list);
