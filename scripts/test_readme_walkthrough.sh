@@ -29,8 +29,9 @@ write_result() {
 XML
 }
 
-if [ ! -d "$ROOT/../shared/data/asr_recordings" ]; then
-  write_result skipped "the recordings are absent (../shared/data/asr_recordings)"
+recordings="${ASR_RECORDINGS_DIR:-$ROOT/../shared/data/asr_recordings}"
+if [ ! -f "$recordings/story_1.sqlite" ]; then
+  write_result skipped "the recordings are absent ($recordings)"
   echo "readme walkthrough: skipped, the recordings are absent"
   exit 0
 fi
