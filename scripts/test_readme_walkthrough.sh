@@ -5,11 +5,11 @@
 # The only things changed around it: a ROS master port of its own (a `roscore` on PATH that adds
 # `-p PORT`, and ROS_MASTER_URI), so that it cannot meet another master on this machine, and ROS
 # logs in a temporary folder. It waits for conditions, not for fixed times; the timeout is only
-# for a walkthrough that hangs, and is generous (a 2-core machine needs about 3 minutes).
+# for a walkthrough that hangs, and is generous (a 2-core machine needs 1-2 minutes).
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RESULT="${1:-$ROOT/build/test_results/readme/walkthrough.xml}"
-TIMEOUT_S="${ASR_WALKTHROUGH_TIMEOUT_S:-1800}"
+TIMEOUT_S="${ASR_WALKTHROUGH_TIMEOUT_S:-600}"
 mkdir -p "$(dirname "$RESULT")"
 
 # Writes the JUnit result: $1 = passed | failed | skipped, $2 = message.
