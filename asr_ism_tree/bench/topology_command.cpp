@@ -164,9 +164,7 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
        "max-evaluations", "seed", "synthetic-max-objects", "threads"},
       {"json", "no-synthetic"});
   TopologySelectionOptions selection;
-  selection.test_count = static_cast<std::size_t>(options.integer("tests", 600));
-  if (selection.test_count == 0)
-    throw UsageError{"--tests must be at least 1"};
+  selection.test_count = static_cast<std::size_t>(options.integer("tests", 600, 1, kMaxTestCount));
   selection.alpha = options.number("alpha", selection.alpha);
   selection.beta = options.number("beta", selection.beta);
   // The search is told the deployment budget the table checks, as a user of RTS would tell it,
@@ -175,12 +173,12 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
   selection.max_duration_ms = options.number("max-duration-ms", 0.9 * kMaxOptimisedMs);
   if (!(selection.max_duration_ms >= 0))
     throw UsageError{"--max-duration-ms must be >= 0 (0: no budget)"};
-  selection.max_evaluations =
-      static_cast<std::size_t>(options.integer("max-evaluations", selection.max_evaluations));
-  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed));
-  selection.threads = static_cast<unsigned>(options.integer("threads", 0));
+  selection.max_evaluations = static_cast<std::size_t>(options.integer(
+      "max-evaluations", static_cast<long long>(selection.max_evaluations), 2, kMaxEvaluations));
+  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed, 0, kMaxSeed));
+  selection.threads = static_cast<unsigned>(options.integer("threads", 0, 0, kMaxThreads));
   const std::size_t synthetic_max_objects =
-      static_cast<std::size_t>(options.integer("synthetic-max-objects", 8));
+      static_cast<std::size_t>(options.integer("synthetic-max-objects", 8, 2, 64));
   const std::string out_dir = options.optional("out", "out/topology");
   std::filesystem::create_directories(out_dir);
   std::ostream& progress = std::cerr;

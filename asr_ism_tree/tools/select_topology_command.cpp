@@ -41,11 +41,9 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   const std::string model_path = options.required("model");
   TopologySelectionOptions selection;
   selection.parameters = cli::recognitionParametersFrom(options);
-  const long long tests = options.integer("tests", static_cast<long long>(selection.test_count));
-  if (tests < 1)
-    throw UsageError{"--tests must be at least 1 (got " + std::to_string(tests) + ")"};
-  selection.test_count = static_cast<std::size_t>(tests);
-  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed));
+  selection.test_count = static_cast<std::size_t>(
+      options.integer("tests", static_cast<long long>(selection.test_count), 1, kMaxTestCount));
+  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed, 0, kMaxSeed));
   selection.alpha = options.number("alpha", selection.alpha);
   selection.beta = options.number("beta", selection.beta);
   if (!(selection.alpha >= 0 && selection.beta >= 0 && selection.alpha + selection.beta > 0))
@@ -53,13 +51,11 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   selection.max_duration_ms = options.number("max-duration-ms", 0.0);
   if (!(selection.max_duration_ms >= 0))
     throw UsageError{"--max-duration-ms must be >= 0 (0: no budget)"};
-  selection.max_tree_height = static_cast<int>(options.integer("max-height", 0));
-  const long long evaluations =
-      options.integer("max-evaluations", static_cast<long long>(selection.max_evaluations));
-  if (evaluations < 2)
-    throw UsageError{"--max-evaluations must be at least 2"};
-  selection.max_evaluations = static_cast<std::size_t>(evaluations);
-  selection.threads = static_cast<unsigned>(options.integer("threads", 0));
+  selection.max_tree_height =
+      static_cast<int>(options.integer("max-height", 0, 0, kMaxTreeHeightOption));
+  selection.max_evaluations = static_cast<std::size_t>(options.integer(
+      "max-evaluations", static_cast<long long>(selection.max_evaluations), 2, kMaxEvaluations));
+  selection.threads = static_cast<unsigned>(options.integer("threads", 0, 0, kMaxThreads));
   const std::string method = options.has("method") ? options.required("method") : "hill-climbing";
   if (method == "annealing")
     selection.method = TopologySearchMethod::kSimulatedAnnealing;
@@ -92,11 +88,13 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   if (options.has("tests-out"))
     writeTestConfigurations(options.required("tests-out"), result.tests, demonstration.objects());
 
-  writeTopologyFile(topology_out, result.topology);
+  // The model first, the topology file once the model is committed: a run that is killed or
+  // fails in between leaves the previous topology file, never one whose model was not stored.
   const IsmTree tree = generateIsmTree(demonstration, result.topology, selection.parameters);
   sqlite::saveIsmTree(
       model_path, tree,
       "demonstration " + demo_path + ", topology selected by RTS (" + topology_out + ")");
+  writeTopologyFile(topology_out, result.topology);
 
   std::printf("selected a relation topology for scene '%s' from %s\n", scene.c_str(),
               demo_path.c_str());

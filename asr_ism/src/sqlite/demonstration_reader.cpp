@@ -54,6 +54,11 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
   std::map<std::int64_t, std::size_t> object_index;
   std::vector<ObjectKey> keys;
   while (objects.step()) {
+    if (objects.isNull(1) || objects.columnText(1).empty()) {
+      throw InputError(path + ", scene '" + scene + "', recorded_objects id " +
+                       std::to_string(objects.columnInt(0)) + ": the type is " +
+                       (objects.isNull(1) ? "NULL" : "empty"));
+    }
     ObjectKey key{objects.columnText(1), objects.columnText(2)};
     const int existing = [&] {
       for (std::size_t i = 0; i < keys.size(); ++i)
@@ -77,36 +82,37 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
   while (sets.step())
     step_of_set[sets.columnInt(0)] = demonstration.addStep();
 
-  // Column 10 flags rows where every pose value is stored as a number.
-  std::string all_numeric = "1";
-  for (const char* column : {"px", "py", "pz", "qw", "qx", "qy", "qz"})
-    all_numeric += std::string(" AND typeof(p.") + column + ") IN ('real', 'integer')";
   Statement poses = db.prepare(
-      "SELECT p.id, p.objectId, p.setId, p.px, p.py, p.pz, p.qw, p.qx, p.qy, p.qz, " + all_numeric +
-      " FROM recorded_poses p JOIN recorded_sets s ON s.id = p.setId "
+      "SELECT p.id, p.objectId, p.setId, p.px, p.py, p.pz, p.qw, p.qx, p.qy, p.qz "
+      "FROM recorded_poses p JOIN recorded_sets s ON s.id = p.setId "
       "WHERE s.patternId = ? ORDER BY p.id");
   poses.bind(1, pattern_id);
+  std::map<std::pair<std::size_t, std::size_t>, std::int64_t> pose_of;  // (step, object) -> id
   while (poses.step()) {
     const std::string row =
         path + ", scene '" + scene + "', recorded_poses id " + std::to_string(poses.columnInt(0));
-    for (int column = 3; column <= 9; ++column) {
-      if (poses.isNull(column))
-        throw InputError(row + ": a pose value is missing (NULL, as SQLite stores a NaN)");
-    }
-    // SQLite would read text in a pose column as 0 without complaint.
-    if (poses.columnInt(10) == 0)
-      throw InputError(row + ": a pose value is not a number");
-    const Pose pose = validatedPose(
-        Eigen::Vector3d(poses.columnDouble(3), poses.columnDouble(4), poses.columnDouble(5)),
-        Eigen::Quaterniond(poses.columnDouble(6), poses.columnDouble(7), poses.columnDouble(8),
-                           poses.columnDouble(9)),
-        row);
+    double values[7];
+    for (int column = 3; column <= 9; ++column)
+      values[column - 3] = poses.columnNumber(column, row);
+    const Pose pose =
+        validatedPose(Eigen::Vector3d(values[0], values[1], values[2]),
+                      Eigen::Quaterniond(values[3], values[4], values[5], values[6]), row);
     const auto object = object_index.find(poses.columnInt(1));
     if (object == object_index.end()) {
       throw InputError(row + ": object id " + std::to_string(poses.columnInt(1)) +
                        " is not in recorded_objects");
     }
-    demonstration.setPose(step_of_set.at(poses.columnInt(2)), object->second, pose);
+    const std::size_t step = step_of_set.at(poses.columnInt(2));
+    const auto [earlier, first] =
+        pose_of.emplace(std::make_pair(step, object->second), poses.columnInt(0));
+    if (!first) {
+      throw InputError(row + ": a second pose of " +
+                       demonstration.objects()[object->second].toString() +
+                       " in recorded_sets id " + std::to_string(poses.columnInt(2)) +
+                       " (the first is recorded_poses id " + std::to_string(earlier->second) +
+                       "); one object has one pose per set");
+    }
+    demonstration.setPose(step, object->second, pose);
   }
   demonstration.validate(path);
   return demonstration;

@@ -29,19 +29,15 @@ void train(const ros::NodeHandle& parameters) {
                  topology == "star" || topology == "complete" || topology == "optimised",
                  "star, complete or optimised");
   TopologySelectionOptions selection;
-  const int tests = optionalParameter<int>(parameters, "tests", 600);
-  checkParameter(parameters, "tests", tests >= 1, ">= 1");
-  selection.test_count = static_cast<std::size_t>(tests);
-  selection.seed = static_cast<std::uint32_t>(optionalParameter<int>(parameters, "seed", 1));
-  selection.alpha = optionalParameter<double>(parameters, "alpha", selection.alpha);
-  selection.beta = optionalParameter<double>(parameters, "beta", selection.beta);
-  checkParameter(parameters, "alpha", selection.alpha >= 0, ">= 0");
-  checkParameter(parameters, "beta", selection.beta >= 0, ">= 0");
-  selection.max_duration_ms = optionalParameter<double>(parameters, "max_duration_ms", 0.0);
-  checkParameter(parameters, "max_duration_ms", selection.max_duration_ms >= 0, ">= 0");
-  const int evaluations = optionalParameter<int>(parameters, "max_evaluations", 160);
-  checkParameter(parameters, "max_evaluations", evaluations >= 2, ">= 2");
-  selection.max_evaluations = static_cast<std::size_t>(evaluations);
+  selection.test_count =
+      static_cast<std::size_t>(integerParameter(parameters, "tests", 600, 1, kMaxTestCount));
+  selection.seed = static_cast<std::uint32_t>(integerParameter(parameters, "seed", 1, 0, kMaxSeed));
+  selection.alpha = numberParameter(parameters, "alpha", selection.alpha, 0.0, 1e6);
+  selection.beta = numberParameter(parameters, "beta", selection.beta, 0.0, 1e6);
+  checkParameter(parameters, "alpha", selection.alpha + selection.beta > 0, "> 0 if beta is 0");
+  selection.max_duration_ms = numberParameter(parameters, "max_duration_ms", 0.0, 0.0, 1e6);
+  selection.max_evaluations = static_cast<std::size_t>(
+      integerParameter(parameters, "max_evaluations", 160, 2, kMaxEvaluations));
   if (scenes.empty())
     scenes = asr_ism::sqlite::listRecordedScenes(demonstration_file);
 
