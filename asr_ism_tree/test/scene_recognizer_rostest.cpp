@@ -120,7 +120,7 @@ TEST_F(SceneRecognizerNodeTest, RequestsLargerThanTheMaximumAreRefusedWithAMessa
   EXPECT_TRUE(response.instances.empty());
   EXPECT_NE(response.message.find("more than the configured maximum of 1000"), std::string::npos)
       << response.message;
-  EXPECT_TRUE(node_->running());
+  EXPECT_TRUE(launch_->process().running()) << "the scene_recognizer is required by the launch";
   EXPECT_FALSE(ask(demonstration_.configuration(3)).instances.empty());
 }
 
