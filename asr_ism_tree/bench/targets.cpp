@@ -43,9 +43,9 @@ std::string where(const SceneRow& row) {
 
 }  // namespace
 
-std::vector<TargetCheck> checkTargets(const std::vector<SceneRow>& scenes,
-                                      const std::vector<SyntheticRow>& synthetic) {
-  std::vector<TargetCheck> checks;
+std::vector<asr_common::cli::Target> checkTargets(const std::vector<SceneRow>& scenes,
+                                                  const std::vector<SyntheticRow>& synthetic) {
+  std::vector<asr_common::cli::Target> checks;
   for (const SceneRow& row : scenes) {
     if (row.topology != "complete")
       continue;
@@ -101,21 +101,6 @@ std::vector<TargetCheck> checkTargets(const std::vector<SceneRow>& scenes,
                       row->recognised_fraction >= 1.0});
   }
   return checks;
-}
-
-void printTargets(std::ostream& out, const std::vector<TargetCheck>& checks) {
-  if (checks.empty()) {
-    out << "Targets: none checked (nothing was measured)\n";
-    return;
-  }
-  out << "Targets\n";
-  std::size_t met = 0;
-  for (const TargetCheck& check : checks) {
-    out << (check.met ? "  met     " : "  MISSED  ") << check.target << ": " << check.measured
-        << "\n";
-    met += check.met ? 1 : 0;
-  }
-  out << "  " << met << " of " << checks.size() << " targets met\n";
 }
 
 }  // namespace asr_ism_tree::bench

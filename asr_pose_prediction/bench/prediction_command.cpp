@@ -76,7 +76,8 @@ int runPredictionBenchmark(const std::vector<std::string>& arguments) {
         combined.push_back(combinedAccuracy(accuracy_rows, topology, held_out));
     }
   }
-  const std::vector<PredictionTarget> targets = checkPredictionTargets(synthetic_rows, combined);
+  const std::vector<asr_common::cli::Target> targets =
+      checkPredictionTargets(synthetic_rows, combined);
 
   if (options.flag("json")) {
     nlohmann::ordered_json json;
@@ -102,7 +103,7 @@ int runPredictionBenchmark(const std::vector<std::string>& arguments) {
       printAccuracyTable(std::cout, accuracy_rows, combined, settings);
       std::cout << "\n";
     }
-    printPredictionTargets(std::cout, targets);
+    asr_common::cli::printTargets(std::cout, targets);
   }
   if (options.has("plot")) {
     plotSyntheticRuntime(synthetic_rows, options.required("plot"));

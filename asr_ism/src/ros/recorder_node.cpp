@@ -3,8 +3,12 @@
 #include <std_msgs/UInt32.h>
 
 #include "asr_common/ros/node_parameters.hpp"
+#include "asr_common/ros/queue_sizes.hpp"
 
 namespace asr_ism::ros_interface {
+
+using asr_common::ros_interface::kEveryMessageQueue;
+using asr_common::ros_interface::kLatchedQueue;
 
 using asr_common::ros_interface::checkParameter;
 using asr_common::ros_interface::fixedFrameParameter;
@@ -29,10 +33,12 @@ RecorderNode::RecorderNode(ros::NodeHandle node, ros::NodeHandle private_node)
                  ">= 0 s (0: estimates never expire)");
   writer_ = std::make_unique<sqlite::DemonstrationWriter>(file);
 
-  recorded_publisher_ = private_node_.advertise<std_msgs::UInt32>("recorded_sets", 1, true);
-  rejected_publisher_ = private_node_.advertise<std_msgs::UInt32>("rejected_estimates", 1, true);
+  recorded_publisher_ =
+      private_node_.advertise<std_msgs::UInt32>("recorded_sets", kLatchedQueue, true);
+  rejected_publisher_ =
+      private_node_.advertise<std_msgs::UInt32>("rejected_estimates", kLatchedQueue, true);
   publishCounters();
-  subscriber_ = node_.subscribe("objects", 1000, &RecorderNode::receive, this);
+  subscriber_ = node_.subscribe("objects", kEveryMessageQueue, &RecorderNode::receive, this);
   service_ = node_.advertiseService("record_configuration", &RecorderNode::recordService, this);
   if (mode_ == "interval")
     timer_ = node_.createTimer(ros::Duration(interval), &RecorderNode::tick, this);

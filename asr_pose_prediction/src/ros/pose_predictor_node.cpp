@@ -4,11 +4,15 @@
 
 #include "asr_common/input_error.hpp"
 #include "asr_common/ros/node_parameters.hpp"
+#include "asr_common/ros/queue_sizes.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_pose_prediction/ros/pose_cloud_message.hpp"
 #include "asr_pose_prediction/ros/prediction_markers.hpp"
 
 namespace asr_pose_prediction::ros_interface {
+
+using asr_common::ros_interface::kLatchedQueue;
+using asr_common::ros_interface::kResultQueue;
 
 using asr_common::ros_interface::checkParameter;
 using asr_common::ros_interface::optionalParameter;
@@ -34,10 +38,11 @@ PosePredictorNode::PosePredictorNode(ros::NodeHandle node, ros::NodeHandle priva
   for (const std::string& scene : models_.scenes())
     predictors_.emplace(scene, PosePredictor(models_.tree(scene)));
 
-  clouds_publisher_ = node_.advertise<asr_msgs::PredictedPoseCloud>("predicted_poses", 10);
+  clouds_publisher_ =
+      node_.advertise<asr_msgs::PredictedPoseCloud>("predicted_poses", kResultQueue);
   markers_publisher_ =
-      node_.advertise<visualization_msgs::MarkerArray>("prediction_markers", 1, true);
-  subscriber_ = node_.subscribe("scene_instances", 10, &PosePredictorNode::receive, this);
+      node_.advertise<visualization_msgs::MarkerArray>("prediction_markers", kLatchedQueue, true);
+  subscriber_ = node_.subscribe("scene_instances", kResultQueue, &PosePredictorNode::receive, this);
   service_ = node_.advertiseService("predict_poses", &PosePredictorNode::predictService, this);
   continuous_ = continuous;
   ROS_INFO("pose_predictor: %zu scenes, %d poses per missing object", predictors_.size(), samples);
