@@ -14,6 +14,7 @@
 #include "asr_common/cli/recordings_folder.hpp"
 #include "asr_common/cli/targets.hpp"
 #include "asr_common/input_error.hpp"
+#include "asr_ism_tree/cli/topology_selection_options.hpp"
 #include "synthetic_benchmark.hpp"
 #include "topology_benchmark.hpp"
 
@@ -156,29 +157,6 @@ void plotRuntimes(const std::vector<TopologyRuntimePoint>& points, const std::st
   asr_common::cli::drawLinePlot(plot, path);
 }
 
-// The search's options from the command line; defaults are TopologySelectionOptions' own, but
-// for the time budget.
-TopologySelectionOptions selectionOptionsFrom(const CommandLine& options) {
-  TopologySelectionOptions selection;
-  selection.test_count = static_cast<std::size_t>(
-      options.integer("tests", static_cast<long long>(selection.test_count)));
-  if (selection.test_count == 0)
-    throw UsageError{"--tests must be at least 1"};
-  selection.alpha = options.number("alpha", selection.alpha);
-  selection.beta = options.number("beta", selection.beta);
-  // The search is told the deployment budget the table checks, as a user of RTS would tell it,
-  // less 10 % for timing noise: the chosen tree is timed again against the budget, but its time
-  // on a loaded machine can still come out higher in the table.
-  selection.max_duration_ms = options.number("max-duration-ms", 0.9 * kMaxOptimisedMs);
-  if (!(selection.max_duration_ms >= 0))
-    throw UsageError{"--max-duration-ms must be >= 0 (0: no budget)"};
-  selection.max_evaluations = static_cast<std::size_t>(
-      options.integer("max-evaluations", static_cast<long long>(selection.max_evaluations)));
-  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed));
-  selection.threads = static_cast<unsigned>(options.integer("threads", 0));
-  return selection;
-}
-
 // Per scene: optimised numFPs no worse than the paper's, optimised avgDur within the budget,
 // complete numFPs 0; and the whole table within its time.
 std::vector<asr_common::cli::Target> topologyTargets(const std::vector<TopologyTableRow>& rows,
@@ -225,7 +203,11 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
       {"out", "scenes", "recordings", "tests", "alpha", "beta", "max-duration-ms",
        "max-evaluations", "seed", "synthetic-max-objects", "threads"},
       {"json", "no-synthetic"});
-  const TopologySelectionOptions selection = selectionOptionsFrom(options);
+  // The search is told the deployment budget the table checks, as a user of RTS would tell it,
+  // less 10 % for timing noise: the chosen tree is timed again against the budget, but its time
+  // on a loaded machine can still come out higher in the table.
+  const TopologySelectionOptions selection =
+      cli::topologySelectionOptionsFrom(options, 0.9 * kMaxOptimisedMs);
   const std::size_t synthetic_max_objects =
       static_cast<std::size_t>(options.integer("synthetic-max-objects", 8));
   const std::string out_dir = options.optional("out", "out/topology");
