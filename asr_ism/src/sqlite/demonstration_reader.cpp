@@ -1,5 +1,6 @@
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "asr_ism/common_types.hpp"
@@ -29,10 +30,10 @@ std::vector<std::string> listRecordedScenes(const std::string& path) {
   return scenes;
 }
 
-Demonstration readDemonstration(const std::string& path, const std::string& scene) {
-  Database db(path, Database::Mode::kReadOnly);
-  requireOriginalSchema(db);
+namespace {
 
+// The id of the scene's row in recorded_patterns; throws naming the scenes the file has.
+std::int64_t patternId(Database& db, const std::string& path, const std::string& scene) {
   Statement pattern = db.prepare("SELECT id FROM recorded_patterns WHERE name = ?");
   pattern.bind(1, scene);
   if (!pattern.step()) {
@@ -42,41 +43,51 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
     throw InputError(path + ": no demonstration of scene '" + scene +
                      "' (the file has: " + (known.empty() ? "none" : known) + ")");
   }
-  const std::int64_t pattern_id = pattern.columnInt(0);
+  return pattern.columnInt(0);
+}
 
-  // Objects in order of first appearance (by pose id), so the order follows the recording.
+// The scene's objects in order of first appearance (by pose id), so the order follows the
+// recording, and the index of each recorded_objects id among them: two rows for one
+// (type, observedId) are the same object recorded twice.
+std::vector<ObjectKey> sceneObjects(Database& db, std::int64_t pattern_id,
+                                    std::map<std::int64_t, std::size_t>& object_index) {
   Statement objects = db.prepare(
       "SELECT o.id, o.type, o.observedId FROM recorded_objects o "
       "JOIN (SELECT p.objectId AS objectId, min(p.id) AS first FROM recorded_poses p "
       "      JOIN recorded_sets s ON s.id = p.setId WHERE s.patternId = ? GROUP BY p.objectId) f "
       "ON f.objectId = o.id ORDER BY f.first");
   objects.bind(1, pattern_id);
-  std::map<std::int64_t, std::size_t> object_index;
   std::vector<ObjectKey> keys;
   while (objects.step()) {
-    ObjectKey key{objects.columnText(1), objects.columnText(2)};
-    const int existing = [&] {
-      for (std::size_t i = 0; i < keys.size(); ++i)
-        if (keys[i] == key)
-          return static_cast<int>(i);
-      return -1;
-    }();
-    // Two rows for one (type, observedId) are the same object recorded twice.
-    if (existing >= 0) {
-      object_index[objects.columnInt(0)] = static_cast<std::size_t>(existing);
-    } else {
-      object_index[objects.columnInt(0)] = keys.size();
+    const ObjectKey key{objects.columnText(1), objects.columnText(2)};
+    const auto existing = std::find(keys.begin(), keys.end(), key);
+    object_index[objects.columnInt(0)] = static_cast<std::size_t>(existing - keys.begin());
+    if (existing == keys.end())
       keys.push_back(key);
-    }
   }
-  Demonstration demonstration(scene, keys);
+  return keys;
+}
 
-  Statement sets = db.prepare("SELECT id FROM recorded_sets WHERE patternId = ? ORDER BY id");
-  sets.bind(1, pattern_id);
-  std::map<std::int64_t, std::size_t> step_of_set;
-  while (sets.step())
-    step_of_set[sets.columnInt(0)] = demonstration.addStep();
+// The pose of the current row of `poses` (columns 3 to 9, and 10: all numeric), checked.
+Pose rowPose(Statement& poses, const std::string& row) {
+  for (int column = 3; column <= 9; ++column) {
+    if (poses.isNull(column))
+      throw InputError(row + ": a pose value is missing (NULL, as SQLite stores a NaN)");
+  }
+  // SQLite would read text in a pose column as 0 without complaint.
+  if (poses.columnInt(10) == 0)
+    throw InputError(row + ": a pose value is not a number");
+  return validatedPose(
+      Eigen::Vector3d(poses.columnDouble(3), poses.columnDouble(4), poses.columnDouble(5)),
+      Eigen::Quaterniond(poses.columnDouble(6), poses.columnDouble(7), poses.columnDouble(8),
+                         poses.columnDouble(9)),
+      row);
+}
 
+void readPoses(Database& db, std::int64_t pattern_id, const std::string& where,
+               const std::map<std::int64_t, std::size_t>& object_index,
+               const std::map<std::int64_t, std::size_t>& step_of_set,
+               Demonstration& demonstration) {
   // Column 10 flags rows where every pose value is stored as a number.
   std::string all_numeric = "1";
   for (const char* column : {"px", "py", "pz", "qw", "qx", "qy", "qz"})
@@ -87,20 +98,8 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
       "WHERE s.patternId = ? ORDER BY p.id");
   poses.bind(1, pattern_id);
   while (poses.step()) {
-    const std::string row =
-        path + ", scene '" + scene + "', recorded_poses id " + std::to_string(poses.columnInt(0));
-    for (int column = 3; column <= 9; ++column) {
-      if (poses.isNull(column))
-        throw InputError(row + ": a pose value is missing (NULL, as SQLite stores a NaN)");
-    }
-    // SQLite would read text in a pose column as 0 without complaint.
-    if (poses.columnInt(10) == 0)
-      throw InputError(row + ": a pose value is not a number");
-    const Pose pose = validatedPose(
-        Eigen::Vector3d(poses.columnDouble(3), poses.columnDouble(4), poses.columnDouble(5)),
-        Eigen::Quaterniond(poses.columnDouble(6), poses.columnDouble(7), poses.columnDouble(8),
-                           poses.columnDouble(9)),
-        row);
+    const std::string row = where + ", recorded_poses id " + std::to_string(poses.columnInt(0));
+    const Pose pose = rowPose(poses, row);
     const auto object = object_index.find(poses.columnInt(1));
     if (object == object_index.end()) {
       throw InputError(row + ": object id " + std::to_string(poses.columnInt(1)) +
@@ -108,6 +107,24 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
     }
     demonstration.setPose(step_of_set.at(poses.columnInt(2)), object->second, pose);
   }
+}
+
+}  // namespace
+
+Demonstration readDemonstration(const std::string& path, const std::string& scene) {
+  Database db(path, Database::Mode::kReadOnly);
+  requireOriginalSchema(db);
+  const std::int64_t pattern_id = patternId(db, path, scene);
+  std::map<std::int64_t, std::size_t> object_index;
+  Demonstration demonstration(scene, sceneObjects(db, pattern_id, object_index));
+
+  Statement sets = db.prepare("SELECT id FROM recorded_sets WHERE patternId = ? ORDER BY id");
+  sets.bind(1, pattern_id);
+  std::map<std::int64_t, std::size_t> step_of_set;
+  while (sets.step())
+    step_of_set[sets.columnInt(0)] = demonstration.addStep();
+  readPoses(db, pattern_id, path + ", scene '" + scene + "'", object_index, step_of_set,
+            demonstration);
   demonstration.validate(path);
   return demonstration;
 }
