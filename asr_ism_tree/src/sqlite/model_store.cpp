@@ -186,95 +186,6 @@ void saveIsms(Database& db, std::int64_t tree_id, const IsmTree& tree) {
   }
 }
 
-// The tree's parameters and topology from its rows; throws for relations that name no object.
-IsmTree loadTopology(Database& db, std::int64_t tree_id, const std::string& scene) {
-  Statement tree_row =
-      db.prepare("SELECT bin_size, max_angle_deviation FROM asr_ism_trees WHERE id = ?");
-  tree_row.bind(1, tree_id);
-  tree_row.step();
-  IsmTree tree;
-  tree.scene = scene;
-  tree.parameters.bin_size = tree_row.columnDouble(0);
-  tree.parameters.max_angle_deviation = tree_row.columnDouble(1);
-  std::vector<ObjectKey> objects;
-  Statement object_rows = db.prepare(
-      "SELECT type, observed_id FROM asr_ism_objects WHERE tree_id = ? ORDER BY position");
-  object_rows.bind(1, tree_id);
-  while (object_rows.step())
-    objects.push_back({object_rows.columnText(0), object_rows.columnText(1)});
-  tree.topology = RelationTopology(objects);
-  Statement relation_rows =
-      db.prepare("SELECT object_a, object_b FROM asr_ism_relations WHERE tree_id = ?");
-  relation_rows.bind(1, tree_id);
-  while (relation_rows.step()) {
-    const auto a = relation_rows.columnInt(0), b = relation_rows.columnInt(1);
-    if (a < 0 || b < 0 || a == b || a >= static_cast<std::int64_t>(objects.size()) ||
-        b >= static_cast<std::int64_t>(objects.size())) {
-      throw InputError(db.path() + ", scene '" + scene + "': a stored relation names no object");
-    }
-    tree.topology.addRelation(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
-  }
-  return tree;
-}
-
-// The index of a stored ISM reference; throws for one that names no ISM.
-std::size_t ismIndex(const IsmTree& tree, std::int64_t value, const std::string& where,
-                     const char* what) {
-  if (value < 0 || value >= static_cast<std::int64_t>(tree.isms.size()))
-    throw InputError(where + ": a stored " + what + " names no ISM");
-  return static_cast<std::size_t>(value);
-}
-
-void loadIsmsAndMembers(Database& db, std::int64_t tree_id, const std::string& where,
-                        IsmTree& tree) {
-  Statement ism_rows = db.prepare(
-      "SELECT name, parent, level, reference_type, reference_id FROM asr_ism_isms "
-      "WHERE tree_id = ? ORDER BY position");
-  ism_rows.bind(1, tree_id);
-  while (ism_rows.step()) {
-    asr_ism::Ism ism;
-    ism.name = ism_rows.columnText(0);
-    ism.reference = {ism_rows.columnText(3), ism_rows.columnText(4)};
-    tree.isms.push_back(std::move(ism));
-    tree.parent.push_back(static_cast<int>(ism_rows.columnInt(1)));
-    tree.level.push_back(static_cast<int>(ism_rows.columnInt(2)));
-  }
-  Statement member_rows = db.prepare(
-      "SELECT ism, type, observed_id, child_ism FROM asr_ism_members WHERE tree_id = ? "
-      "ORDER BY ism, position");
-  member_rows.bind(1, tree_id);
-  while (member_rows.step()) {
-    asr_ism::IsmMember member;
-    member.object = {member_rows.columnText(1), member_rows.columnText(2)};
-    member.child_ism = static_cast<int>(member_rows.columnInt(3));
-    tree.isms[ismIndex(tree, member_rows.columnInt(0), where, "member")].members.push_back(
-        std::move(member));
-  }
-}
-
-void loadRelativePoses(Database& db, std::int64_t tree_id, const std::string& where,
-                       IsmTree& tree) {
-  Statement pose_rows = db.prepare(
-      "SELECT ism, member, px, py, pz, qw, qx, qy, qz, step_count FROM asr_ism_relative_poses "
-      "WHERE tree_id = ? ORDER BY ism, member, position");
-  pose_rows.bind(1, tree_id);
-  while (pose_rows.step()) {
-    auto& members =
-        tree.isms[ismIndex(tree, pose_rows.columnInt(0), where, "relative pose")].members;
-    const auto m = pose_rows.columnInt(1);
-    if (m < 0 || m >= static_cast<std::int64_t>(members.size()))
-      throw InputError(where + ": a stored relative pose names no member");
-    asr_common::Pose pose;
-    pose.position = Eigen::Vector3d(pose_rows.columnDouble(2), pose_rows.columnDouble(3),
-                                    pose_rows.columnDouble(4));
-    pose.orientation = Eigen::Quaterniond(pose_rows.columnDouble(5), pose_rows.columnDouble(6),
-                                          pose_rows.columnDouble(7), pose_rows.columnDouble(8));
-    // Checked, but kept bit for bit as stored: a loaded tree recognises exactly like the learned.
-    asr_common::validatedPose(pose.position, pose.orientation, where + ", a relative pose", 1e-9);
-    members[m].relative_poses.push_back({pose, static_cast<std::uint32_t>(pose_rows.columnInt(9))});
-  }
-}
-
 }  // namespace
 
 void saveIsmTree(const std::string& path, const IsmTree& tree, const std::string& source) {
@@ -309,7 +220,8 @@ IsmTree loadIsmTree(const std::string& path, const std::string& scene) {
   if (!checkSchemaVersion(db)) {
     throw InputError(path + ": contains no ISM tree model (learn one with `asr ism learn`)");
   }
-  Statement tree_row = db.prepare("SELECT id FROM asr_ism_trees WHERE scene = ?");
+  Statement tree_row =
+      db.prepare("SELECT id, bin_size, max_angle_deviation FROM asr_ism_trees WHERE scene = ?");
   tree_row.bind(1, scene);
   if (!tree_row.step()) {
     std::string known;
@@ -319,10 +231,78 @@ IsmTree loadIsmTree(const std::string& path, const std::string& scene) {
                      "' (the file has: " + (known.empty() ? "none" : known) + ")");
   }
   const std::int64_t tree_id = tree_row.columnInt(0);
-  const std::string where = path + ", scene '" + scene + "'";
-  IsmTree tree = loadTopology(db, tree_id, scene);
-  loadIsmsAndMembers(db, tree_id, where, tree);
-  loadRelativePoses(db, tree_id, where, tree);
+  IsmTree tree;
+  tree.scene = scene;
+  tree.parameters.bin_size = tree_row.columnDouble(1);
+  tree.parameters.max_angle_deviation = tree_row.columnDouble(2);
+
+  std::vector<ObjectKey> objects;
+  Statement object_rows = db.prepare(
+      "SELECT type, observed_id FROM asr_ism_objects WHERE tree_id = ? ORDER BY position");
+  object_rows.bind(1, tree_id);
+  while (object_rows.step())
+    objects.push_back({object_rows.columnText(0), object_rows.columnText(1)});
+  tree.topology = RelationTopology(objects);
+  Statement relation_rows =
+      db.prepare("SELECT object_a, object_b FROM asr_ism_relations WHERE tree_id = ?");
+  relation_rows.bind(1, tree_id);
+  while (relation_rows.step()) {
+    const auto a = relation_rows.columnInt(0), b = relation_rows.columnInt(1);
+    if (a < 0 || b < 0 || a == b || a >= static_cast<std::int64_t>(objects.size()) ||
+        b >= static_cast<std::int64_t>(objects.size())) {
+      throw InputError(path + ", scene '" + scene + "': a stored relation names no object");
+    }
+    tree.topology.addRelation(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
+  }
+
+  Statement ism_rows = db.prepare(
+      "SELECT name, parent, level, reference_type, reference_id FROM asr_ism_isms "
+      "WHERE tree_id = ? ORDER BY position");
+  ism_rows.bind(1, tree_id);
+  while (ism_rows.step()) {
+    asr_ism::Ism ism;
+    ism.name = ism_rows.columnText(0);
+    ism.reference = {ism_rows.columnText(3), ism_rows.columnText(4)};
+    tree.isms.push_back(std::move(ism));
+    tree.parent.push_back(static_cast<int>(ism_rows.columnInt(1)));
+    tree.level.push_back(static_cast<int>(ism_rows.columnInt(2)));
+  }
+  const auto ism_index = [&](std::int64_t value, const char* what) {
+    if (value < 0 || value >= static_cast<std::int64_t>(tree.isms.size())) {
+      throw InputError(path + ", scene '" + scene + "': a stored " + what + " names no ISM");
+    }
+    return static_cast<std::size_t>(value);
+  };
+  Statement member_rows = db.prepare(
+      "SELECT ism, type, observed_id, child_ism FROM asr_ism_members WHERE tree_id = ? "
+      "ORDER BY ism, position");
+  member_rows.bind(1, tree_id);
+  while (member_rows.step()) {
+    asr_ism::IsmMember member;
+    member.object = {member_rows.columnText(1), member_rows.columnText(2)};
+    member.child_ism = static_cast<int>(member_rows.columnInt(3));
+    tree.isms[ism_index(member_rows.columnInt(0), "member")].members.push_back(std::move(member));
+  }
+  Statement pose_rows = db.prepare(
+      "SELECT ism, member, px, py, pz, qw, qx, qy, qz, step_count FROM asr_ism_relative_poses "
+      "WHERE tree_id = ? ORDER BY ism, member, position");
+  pose_rows.bind(1, tree_id);
+  while (pose_rows.step()) {
+    auto& members = tree.isms[ism_index(pose_rows.columnInt(0), "relative pose")].members;
+    const auto m = pose_rows.columnInt(1);
+    if (m < 0 || m >= static_cast<std::int64_t>(members.size())) {
+      throw InputError(path + ", scene '" + scene + "': a stored relative pose names no member");
+    }
+    asr_common::Pose pose;
+    pose.position = Eigen::Vector3d(pose_rows.columnDouble(2), pose_rows.columnDouble(3),
+                                    pose_rows.columnDouble(4));
+    pose.orientation = Eigen::Quaterniond(pose_rows.columnDouble(5), pose_rows.columnDouble(6),
+                                          pose_rows.columnDouble(7), pose_rows.columnDouble(8));
+    // Checked, but kept bit for bit as stored: a loaded tree recognises exactly like the learned.
+    asr_common::validatedPose(pose.position, pose.orientation,
+                              path + ", scene '" + scene + "', a relative pose", 1e-9);
+    members[m].relative_poses.push_back({pose, static_cast<std::uint32_t>(pose_rows.columnInt(9))});
+  }
   tree.validate(path);
   return tree;
 }
