@@ -7,13 +7,8 @@
 
 namespace asr_ism::ros_interface {
 
-using asr_common::ros_interface::kEveryMessageQueue;
-using asr_common::ros_interface::kLatchedQueue;
+using namespace asr_common::ros_interface;
 
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::fixedFrameParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::requiredParameter;
 RecorderNode::RecorderNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
       private_node_(private_node),

@@ -13,15 +13,7 @@
 
 namespace asr_ism::ros_interface {
 
-using asr_common::ros_interface::kEveryMessageQueue;
-using asr_common::ros_interface::kLatchedQueue;
-
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::fixedFrameParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::requiredParameter;
-using asr_common::ros_interface::stringListParameter;
-using asr_common::ros_interface::toEstimateMessage;
+using namespace asr_common::ros_interface;
 
 ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : node_(node) {
   const auto file = requiredParameter<std::string>(private_node, "demonstration_file");

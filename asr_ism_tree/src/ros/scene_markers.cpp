@@ -9,11 +9,7 @@
 namespace asr_ism_tree::ros_interface {
 namespace {
 
-using asr_common::ros_interface::deleteAllMarker;
-using asr_common::ros_interface::newMarker;
-using asr_common::ros_interface::pointOf;
-using asr_common::ros_interface::rgbaColor;
-using asr_common::ros_interface::toPoseMessage;
+using namespace asr_common::ros_interface;
 using visualization_msgs::Marker;
 
 constexpr double kSphereHeight = 0.4;  // metres above the instance's pose

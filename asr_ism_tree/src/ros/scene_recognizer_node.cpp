@@ -12,14 +12,7 @@
 
 namespace asr_ism_tree::ros_interface {
 
-using asr_common::ros_interface::kEstimateQueue;
-using asr_common::ros_interface::kLatchedQueue;
-using asr_common::ros_interface::kResultQueue;
-
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::fixedFrameParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::stringListParameter;
+using namespace asr_common::ros_interface;
 
 SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),

@@ -11,12 +11,7 @@
 
 namespace asr_pose_prediction::ros_interface {
 
-using asr_common::ros_interface::kLatchedQueue;
-using asr_common::ros_interface::kResultQueue;
-
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::stringListParameter;
+using namespace asr_common::ros_interface;
 
 PosePredictorNode::PosePredictorNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node) {
