@@ -17,6 +17,11 @@ using Command = int (*)(const std::vector<std::string>& arguments);
 int runCommandMain(const std::string& program, const std::string& usage,
                    const std::map<std::string, Command>& commands, int argc, char** argv);
 
+/// The main() of a tool without subcommands: `program [options]`, with the exit codes and
+/// one-line messages of runCommandMain (`program: error: ...`); --help or -h prints the usage.
+int runToolMain(const std::string& program, const std::string& usage, Command run, int argc,
+                char** argv);
+
 /// `message` with line breaks and other control characters escaped.
 std::string oneLine(const std::string& message);
 
