@@ -89,4 +89,15 @@ int runToolMain(const std::string& program, const std::string& usage, Command ru
   return runGuarded(program + ": ", usage, run, std::vector<std::string>(argv + 1, argv + argc));
 }
 
+int runSingleCommandMain(const std::string& program, const std::string& command,
+                         const std::string& usage, Command run, int argc, char** argv) {
+  if (asksForHelp(argc, argv)) {
+    std::cout << usage;
+    return 0;
+  }
+  const std::vector<std::string> arguments(argv + (argc > 1 && command == argv[1] ? 2 : 1),
+                                           argv + argc);
+  return runGuarded(program + " " + command + ": ", usage, run, arguments);
+}
+
 }  // namespace asr_common::cli
