@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "asr_common/input_error.hpp"
+#include "asr_common/input_limits.hpp"
 
 namespace asr_common {
 
@@ -47,6 +48,13 @@ Pose validatedPose(const Eigen::Vector3d& position, const Eigen::Quaterniond& or
                    const std::string& what, double norm_tolerance) {
   if (!position.allFinite()) {
     throw InputError(what + ": position is not finite (NaN or infinity)");
+  }
+  if (position.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+    std::ostringstream message;
+    message << what << ": position (" << position.x() << ", " << position.y() << ", "
+            << position.z() << ") is more than " << kMaxCoordinate
+            << " m from the origin in a coordinate (the suite's limit)";
+    throw InputError(message.str());
   }
   if (!orientation.coeffs().allFinite()) {
     throw InputError(what + ": orientation is not finite (NaN or infinity)");

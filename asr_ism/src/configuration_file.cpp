@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "asr_common/atomic_file.hpp"
@@ -68,6 +69,27 @@ ObjectEstimate readObject(const YAML::Node& node, const std::string& what) {
   return estimate;
 }
 
+// yaml-cpp keeps a key given twice and answers lookups with one of them: which value a user
+// meant is unknowable, so the file is refused.
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& path) {
+  if (node.IsSequence()) {
+    for (const YAML::Node& element : node)
+      rejectDuplicateKeys(element, path);
+    return;
+  }
+  if (!node.IsMap())
+    return;
+  std::set<std::string> keys;
+  for (const auto& entry : node) {
+    const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : YAML::Dump(entry.first);
+    if (!keys.insert(key).second) {
+      throw InputError(path + ": line " + std::to_string(entry.first.Mark().line + 1) + ": key '" +
+                       key + "' is given twice");
+    }
+    rejectDuplicateKeys(entry.second, path);
+  }
+}
+
 // YAML double-quoted scalar, so any type or id text survives the round trip. Control characters
 // are escaped: a line break written as it is would be read back as a space.
 std::string quoted(const std::string& text) {
@@ -93,9 +115,9 @@ Configuration readConfigurationFile(const std::string& path) {
   std::ifstream file(path);
   if (!file)
     throw InputError(path + ": cannot open the objects file");
-  YAML::Node root;
+  std::vector<YAML::Node> documents;
   try {
-    root = YAML::Load(file);
+    documents = YAML::LoadAll(file);
   } catch (const YAML::ParserException& error) {
     throw InputError(path + ": malformed YAML/JSON at line " + std::to_string(error.mark.line + 1) +
                      ": " + error.msg);
@@ -103,6 +125,13 @@ Configuration readConfigurationFile(const std::string& path) {
     // E.g. a folder: it opens, but reading it fails.
     throw InputError(path + ": cannot read the objects file (" + error.what() + ")");
   }
+  // Text after the mapping (`{...} garbage`, a second document) would be ignored silently.
+  if (documents.size() > 1) {
+    throw InputError(path + ": unexpected content after the objects at line " +
+                     std::to_string(documents[1].Mark().line + 1));
+  }
+  const YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
+  rejectDuplicateKeys(root, path);
   if (!root.IsMap() || !root["objects"]) {
     throw InputError(path + ": expected a mapping with a list 'objects'");
   }

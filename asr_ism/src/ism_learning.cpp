@@ -1,9 +1,11 @@
 #include "asr_ism/ism_learning.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <tuple>
 
 #include "asr_ism/common_types.hpp"
+#include "asr_ism/input_limits.hpp"
 
 namespace asr_ism {
 namespace {
@@ -40,6 +42,20 @@ std::vector<RelativePose> mergeDuplicates(std::vector<Pose> poses) {
   return merged;
 }
 
+// A relation longer than any scene spans comes from an outlier pose (a glitch of a detector or a
+// recording); learnt, it would make every later recognition vote far out of the scene.
+void checkRelationLength(const std::string& ism, const ObjectKey& member,
+                         const ObjectKey& reference, std::size_t step, const Pose& relative) {
+  const double length = relative.position.norm();
+  if (length <= kMaxRelationLength)
+    return;
+  std::ostringstream message;
+  message << "ISM '" << ism << "': in time step " << step << ", " << member.toString() << " is "
+          << length << " m from the reference " << reference.toString() << ", more than the "
+          << kMaxRelationLength << " m a scene may span; is one of these poses an outlier?";
+  throw InputError(message.str());
+}
+
 }  // namespace
 
 Ism learnIsm(const std::string& name, const ObjectKey& reference,
@@ -57,6 +73,7 @@ Ism learnIsm(const std::string& name, const ObjectKey& reference,
     for (std::size_t step = 0; step < reference_trajectory.size(); ++step) {
       if (member.trajectory[step] && reference_trajectory[step]) {
         relative.push_back(relativePose(*member.trajectory[step], *reference_trajectory[step]));
+        checkRelationLength(name, member.object, reference, step, relative.back());
       }
     }
     if (relative.empty()) {

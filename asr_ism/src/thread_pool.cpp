@@ -3,16 +3,20 @@
 #include <algorithm>
 
 namespace asr_ism {
-namespace {
-thread_local bool inside_parallel_for = false;
-}  // namespace
 
 ThreadPool::ThreadPool(unsigned threads) {
   if (threads == 0) {
     threads = std::max(1u, std::thread::hardware_concurrency());
   }
+  workers_.reserve(threads - 1);
   for (unsigned worker = 1; worker < threads; ++worker) {
-    workers_.emplace_back([this] { workerLoop(); });
+    try {
+      workers_.emplace_back([this] { workerLoop(); });
+    } catch (const std::exception&) {
+      // std::system_error (no resources for a thread) or std::bad_alloc: work with the threads
+      // there are; the calling thread alone still completes every call.
+      break;
+    }
   }
 }
 
@@ -27,16 +31,22 @@ ThreadPool::~ThreadPool() {
   }
 }
 
-void ThreadPool::runIndices(Job& job) {
+void ThreadPool::runIndices(Job& job) noexcept {
   for (std::size_t index = job.next.fetch_add(1); index < job.count;
        index = job.next.fetch_add(1)) {
-    (*job.task)(index);
+    try {
+      (*job.task)(index);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(job.error_mutex);
+      if (!job.error)
+        job.error = std::current_exception();
+      job.next.store(job.count);  // start no further index
+    }
   }
 }
 
 void ThreadPool::workerLoop() {
   std::size_t seen_generation = 0;
-  inside_parallel_for = true;
   while (true) {
     std::shared_ptr<Job> job;
     {
@@ -62,9 +72,9 @@ void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::si
   if (count == 0) {
     return;
   }
-  std::unique_lock<std::mutex> submit_lock(submit_mutex_, std::defer_lock);
-  // Serial when nested, when there is nothing to share, or when another thread owns the pool.
-  if (inside_parallel_for || workers_.empty() || count == 1 || !submit_lock.try_lock()) {
+  // Serial when there is nothing to share, or when the pool is busy: nested in one of its own
+  // tasks (on a worker or on the caller) or used by another thread.
+  if (workers_.empty() || count == 1 || busy_.exchange(true)) {
     for (std::size_t index = 0; index < count; ++index) {
       task(index);
     }
@@ -79,12 +89,17 @@ void ThreadPool::parallelFor(std::size_t count, const std::function<void(std::si
     ++generation_;
   }
   wake_.notify_all();
-  inside_parallel_for = true;
   runIndices(*job);
-  inside_parallel_for = false;
-  std::unique_lock<std::mutex> lock(mutex_);
-  done_.wait(lock, [&] { return job->active_workers == 0; });
-  job_.reset();
+  {
+    // The workers may still run tasks that refer to `task`: wait for them before returning.
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return job->active_workers == 0; });
+    job_.reset();
+  }
+  busy_.store(false);
+  if (job->error) {
+    std::rethrow_exception(job->error);
+  }
 }
 
 }  // namespace asr_ism

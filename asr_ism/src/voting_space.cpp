@@ -39,6 +39,11 @@ std::int64_t VotingSpace::cellOf(double coordinate, double bin_size) {
   return static_cast<std::int64_t>(std::floor(coordinate / bin_size));
 }
 
+double VotingSpace::maxCoordinate(double bin_size) {
+  // The constructor accepts cells in (-kCellOffset, kCellOffset - 1).
+  return static_cast<double>(kCellOffset - 2) * bin_size;
+}
+
 VotingSpace::VotingSpace(double bin_size, const double* x, const double* y, const double* z,
                          std::size_t n) {
   struct Entry {

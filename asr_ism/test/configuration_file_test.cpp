@@ -1,4 +1,5 @@
 #include "asr_ism/configuration_file.hpp"
+#include "asr_ism/input_limits.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -135,9 +136,10 @@ Configuration randomConfiguration(std::uint32_t seed) {
                     Eigen::Quaterniond(Eigen::AngleAxisd(uniform(random), axis.normalized())));
     configuration.push_back({key, pose});
   }
-  // Values whose shortest decimal form is long, tiny, huge or signed zero.
+  // Values whose shortest decimal form is long, tiny, the largest accepted or signed zero.
   configuration[0].pose.position = Eigen::Vector3d(0.1 + 0.2, 1e-300, -0.0);
-  configuration[1].pose.position = Eigen::Vector3d(1e300, -123456789.123456789, 5e-324);
+  configuration[1].pose.position =
+      Eigen::Vector3d(std::nextafter(kMaxCoordinate, 0.0), -123.456789123456789, 5e-324);
   return configuration;
 }
 

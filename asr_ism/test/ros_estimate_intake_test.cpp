@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
 #include "asr_ism/common_types.hpp"
 #include "asr_ism/ros/estimate_intake.hpp"
@@ -11,6 +12,7 @@
 namespace asr_ism::ros_interface {
 
 using asr_common::ros_interface::fromEstimateMessage;
+using asr_common::ros_interface::guardCallback;
 using asr_common::ros_interface::toEstimateMessage;
 namespace {
 
@@ -94,6 +96,50 @@ TEST(RosEstimateIntake, TransformsIntoTheFixedFrameAndCountsRejections) {
   EXPECT_EQ(intake.rejectedCount(), 2u);
   EXPECT_EQ(intake.rejectedByReason().at("invalid estimate"), 1u);
   EXPECT_EQ(intake.rejectedByReason().at("no transform"), 1u);
+}
+
+TEST(RosEstimateIntake, FarAwayEstimatesAreRejectedWithTheirReason) {
+  // An estimate 1e5 m from the origin used to reach the voting space and end the recogniser.
+  ros::Time::init();
+  tf2_ros::Buffer buffer;
+  geometry_msgs::TransformStamped far_camera;
+  far_camera.header.frame_id = "map";
+  far_camera.header.stamp = ros::Time(100.0);
+  far_camera.child_frame_id = "far_camera";
+  far_camera.transform.translation.x = 999.5;
+  far_camera.transform.rotation.w = 1.0;
+  buffer.setTransform(far_camera, "test", true);
+  EstimateIntake intake(buffer, "map", ros::Duration(0.0));
+  auto far = cupIn("map");
+  far.pose.pose.position.x = 1e5;
+  EXPECT_FALSE(intake.accept(far).has_value());
+  // Near the camera, but beyond the limit once in the fixed frame.
+  EXPECT_FALSE(intake.accept(cupIn("far_camera")).has_value());
+  EXPECT_EQ(intake.rejectedByReason().at("invalid estimate"), 2u);
+  auto near = cupIn("far_camera");
+  near.pose.pose.position.x = 0.4;
+  ASSERT_TRUE(intake.accept(near).has_value());
+}
+
+TEST(RosCallbackGuard, NoExceptionLeavesACallback) {
+  ros::Time::init();
+  const auto nothing = [] {};
+  static_assert(noexcept(guardCallback("test", nothing)));
+  int runs = 0;
+  EXPECT_TRUE(guardCallback("test: fine", [&] { ++runs; }));
+  EXPECT_FALSE(guardCallback("test: bad input", [&] {
+    ++runs;
+    throw InputError("voting space: a vote lies too far from the origin");
+  }));
+  EXPECT_FALSE(guardCallback("test: bug", [&] {
+    ++runs;
+    throw std::out_of_range("vector::at");
+  }));
+  EXPECT_FALSE(guardCallback("test: anything", [&] {
+    ++runs;
+    throw 42;
+  }));
+  EXPECT_EQ(runs, 4);
 }
 
 }  // namespace

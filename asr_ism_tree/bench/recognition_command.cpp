@@ -6,6 +6,7 @@
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
 #include "asr_common/input_error.hpp"
+#include "asr_ism_tree/topology_selection/topology_selection.hpp"
 #include "recognition_benchmark.hpp"
 #include "report.hpp"
 #include "synthetic_benchmark.hpp"
@@ -23,9 +24,7 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   const CommandLine options(arguments, {"recordings", "threads", "synthetic-json"},
                             {"json", "no-synthetic"});
   BenchmarkSettings settings;
-  settings.threads = static_cast<unsigned>(options.integer("threads", 1));
-  if (settings.threads == 0)
-    throw UsageError{"--threads must be at least 1"};
+  settings.threads = static_cast<unsigned>(options.integer("threads", 1, 1, kMaxThreads));
   const bool json = options.flag("json");
   const std::string synthetic_json = options.optional("synthetic-json", "");
   // In JSON mode stdout carries only the scene array, so the synthetic rows need a file.

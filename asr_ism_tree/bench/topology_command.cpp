@@ -209,7 +209,7 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
   const TopologySelectionOptions selection =
       cli::topologySelectionOptionsFrom(options, 0.9 * kMaxOptimisedMs);
   const std::size_t synthetic_max_objects =
-      static_cast<std::size_t>(options.integer("synthetic-max-objects", 8));
+      static_cast<std::size_t>(options.integer("synthetic-max-objects", 8, 2, 64));
   const std::string out_dir = options.optional("out", "out/topology");
   std::filesystem::create_directories(out_dir);
   std::ostream& progress = std::cerr;

@@ -1,8 +1,10 @@
 #include "asr_ism_tree/ism_tree.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 #include "asr_common/input_error.hpp"
+#include "asr_ism/input_limits.hpp"
 
 namespace asr_ism_tree {
 
@@ -50,6 +52,28 @@ int IsmTree::placeholderMemberInParent(int ism) const {
   return -1;
 }
 
+void IsmTree::validateExtent(const std::string& what) const {
+  const std::string named = what + ", scene '" + scene + "'";
+  asr_ism::checkRecognitionParameters(parameters, named);
+  double longest = 0.0;
+  for (const auto& ism : isms) {
+    for (const auto& member : ism.members) {
+      for (const auto& relative : member.relative_poses) {
+        const double length = relative.reference_in_member.position.norm();
+        if (length > asr_ism::kMaxRelationLength) {
+          std::ostringstream message;
+          message << named << ": ISM '" << ism.name << "' relates " << member.object.toString()
+                  << " to its reference over " << length << " m, more than the "
+                  << asr_ism::kMaxRelationLength << " m a scene may span";
+          throw InputError(message.str());
+        }
+        longest = std::max(longest, length);
+      }
+    }
+  }
+  asr_ism::checkVotingExtent(parameters.bin_size, height(), longest, named);
+}
+
 void IsmTree::validate(const std::string& what) const {
   const auto fail = [&](const std::string& problem) {
     throw InputError(what + ", scene '" + scene + "': " + problem);
@@ -84,6 +108,7 @@ void IsmTree::validate(const std::string& what) const {
       fail("ISM '" + isms[i].name + "' is not referenced by its parent");
     }
   }
+  validateExtent(what);
 }
 
 }  // namespace asr_ism_tree

@@ -71,8 +71,12 @@ std::vector<SceneInstance> SceneModels::recognize(const asr_common::Configuratio
     for (const Model& model : models_)
       wanted.push_back(&model);
   } else {
-    for (const std::string& scene : scenes)
-      wanted.push_back(&model(scene));
+    for (const std::string& scene : scenes) {
+      // A scene asked for twice is answered once.
+      const Model* asked = &model(scene);
+      if (std::find(wanted.begin(), wanted.end(), asked) == wanted.end())
+        wanted.push_back(asked);
+    }
   }
   std::vector<SceneInstance> instances;
   for (const Model* model : wanted) {

@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "asr_common/input_error.hpp"
+#include "asr_ism/input_limits.hpp"
 #include "asr_ism/ism_learning.hpp"
 #include "asr_ism_tree/star_partition.hpp"
 
@@ -82,10 +83,7 @@ IsmTree generateIsmTree(const asr_ism::Demonstration& demonstration,
                         const asr_ism::IsmRecognitionParameters& parameters, int root_center) {
   demonstration.validate("demonstration");
   requireSameObjects(demonstration, topology);
-  if (!(parameters.bin_size > 0.0) || !(parameters.max_angle_deviation > 0.0)) {
-    throw InputError("scene '" + demonstration.scene() +
-                     "': bin size and maximum angle deviation must be > 0");
-  }
+  asr_ism::checkRecognitionParameters(parameters, "scene '" + demonstration.scene() + "'");
   topology.requireConnected("scene '" + demonstration.scene() + "'");
   const std::vector<Star> stars = partitionIntoStars(topology, root_center);
   const std::vector<int> ism_of_star = ismIndexOfStars(stars);

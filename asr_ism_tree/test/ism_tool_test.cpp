@@ -439,6 +439,59 @@ TEST_F(IsmToolOnSmallFiles, UsageErrors) {
   EXPECT_TRUE(help.err.empty());
 }
 
+TEST_F(IsmToolOnSmallFiles, NumbersOutOfRangeAreRefusedNotTruncated) {
+  // Before, --seed 4294967303 ran as --seed 7 and --max-height 4294967296 as unlimited.
+  const std::vector<std::string> select = {"select-topology",
+                                           "--demo",
+                                           demo_,
+                                           "--scene",
+                                           "table",
+                                           "--topology-out",
+                                           dir_.file("topology.txt"),
+                                           "--model",
+                                           dir_.file("model.sqlite")};
+  const std::pair<const char*, const char*> cases[] = {
+      {"--seed", "4294967303"},  {"--seed", "-1"},        {"--max-height", "4294967296"},
+      {"--tests", "1000000000"}, {"--threads", "100000"}, {"--max-evaluations", "1"},
+      {"--bin-size", "1e300"},   {"--bin-size", "0"},     {"--tests", "60x"}};
+  for (const auto& [option, value] : cases) {
+    std::vector<std::string> arguments = select;
+    arguments.insert(arguments.end(), {option, value});
+    expectUsageError(runIsm(dir_, arguments), option);
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("model.sqlite")));
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("topology.txt")));
+}
+
+TEST_F(IsmToolOnSmallFiles, ObjectsFilesWithTrailingTextOrARepeatedKeyAreRefused) {
+  const std::string model = dir_.file("model.sqlite");
+  learn("table", "star", model);
+  const std::string pose =
+      "{position: {x: 0, y: 0, z: 0.75}, orientation: {x: 0, y: 0, z: 0, w: 1}}";
+  const std::string trailing = dir_.write(
+      "trailing.json",
+      "{\"objects\": [{\"type\": \"object_1\", \"id\": \"0\", \"pose\": " + pose + "}]} garbage\n");
+  expectInputError(recognizeObjects(model, "table", trailing), {trailing, "after the objects"});
+  const std::string twice = objectsFile("twice.yaml", pose + "\n    id: \"1\"");
+  expectInputError(recognizeObjects(model, "table", twice), {twice, "'id' is given twice"});
+}
+
+TEST_F(IsmToolOnSmallFiles, InfoSaysWhichModelIsInvalid) {
+  const std::string model = dir_.file("model.sqlite");
+  learn("table", "star", model);
+  learn("shelf", "star", model);
+  asr_ism::sqlite::Database(model, asr_ism::sqlite::Database::Mode::kReadWriteCreate)
+      .execute("UPDATE asr_ism_trees SET bin_size = 1e300 WHERE scene = 'shelf'");
+  const ToolRun info = runIsm(dir_, {"info", "--model", model});
+  EXPECT_EQ(info.exit_code, 1) << describe(info);
+  EXPECT_NE(info.out.find("scene 'table': 4 objects"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("scene 'shelf': INVALID model"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("bin_size 1e+300 m"), std::string::npos) << info.out;
+  ASSERT_EQ(info.err.size(), 1u) << describe(info);
+  EXPECT_NE(info.err[0].find("1 of 2 scene models are invalid"), std::string::npos) << info.err[0];
+  expectInputError(recognizeSet(model, "shelf", 0), {model, "bin_size"});
+}
+
 TEST_F(IsmToolOnSmallFiles, ErrorsStayOnOneLine) {
   // Names with line breaks (from the command line or a file) must not split the error line.
   const std::string model = dir_.file("model.sqlite");

@@ -10,10 +10,13 @@
 #include <std_msgs/UInt32.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <memory>
+#include <random>
 
 #include "asr_common/child_process.hpp"
+#include "asr_common/ros/node_parameters.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/rostest_support.hpp"
@@ -157,6 +160,34 @@ TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesWithinTwoPeriods) {
   EXPECT_LE((found - published).toSec(), 2.0 / kRate);
 }
 
+TEST_F(SceneRecognizerNodeTest, AFarEstimateInContinuousModeIsRejectedAndRecognitionGoesOn) {
+  // One finite estimate 1e5 m from the origin used to end the node inside its timer callback.
+  std::uint32_t rejected = 0;
+  ros::Subscriber counter = handle_.subscribe<std_msgs::UInt32>(
+      "scene_recognizer/rejected_estimates", 10,
+      [&](const std_msgs::UInt32::ConstPtr& count) { rejected = count->data; });
+  bool recognised = false;
+  ros::Subscriber instances = handle_.subscribe<asr_msgs::SceneInstanceList>(
+      "scene_instances", 10, [&](const asr_msgs::SceneInstanceList::ConstPtr& list) {
+        recognised = recognised || (rejected >= 1 && !list->instances.empty() &&
+                                    list->instances[0].confidence >= 0.99);
+      });
+  ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
+  ASSERT_TRUE(waitFor(
+      [&] { return objects.getNumSubscribers() > 0 && instances.getNumPublishers() > 0; }, 30));
+  asr_msgs::ObjectEstimateList list;
+  for (const asr_ism::ObjectEstimate& estimate : demonstration_.configuration(12))
+    list.objects.push_back(estimateMessage(estimate));
+  asr_msgs::ObjectEstimate far = list.objects[0];
+  far.instance_id = "far";
+  far.pose.pose.position.x = 1e5;
+  list.objects.push_back(far);
+  objects.publish(list);
+  EXPECT_TRUE(waitFor([&] { return recognised; }, 10)) << rejected << " rejected";
+  EXPECT_EQ(rejected, 1u);
+  EXPECT_TRUE(node_->running());
+}
+
 TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
   ros::ServiceClient reload = handle_.serviceClient<asr_msgs::ReloadModel>("reload_model");
   asr_msgs::ReloadModel broken;
@@ -194,6 +225,27 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
     if (std::string(topology) == "star")
       EXPECT_EQ(tree.isms.size(), 1u);
   }
+  // Numbers out of range are refused, not wrapped: -1 used to become seed 4294967295, and a
+  // seed beyond 32 bits (stored by roscpp as a double) or 10^9 tests would have run.
+  int refused = 0;
+  for (const char* parameter : {"_seed:=-1", "_seed:=4294967303", "_tests:=1000000000",
+                                "_max_evaluations:=1", "_alpha:=nan"}) {
+    ChildProcess out_of_range(
+        std::string(ASR_NODE_DIR) + "/trainer",
+        {"__name:=trainer_range_" + std::to_string(refused++),
+         "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
+         "_model_file:=" + dir.file("refused.sqlite"), "_scenes:=Getraenke_Regal",
+         "_topology:=star", parameter});
+    EXPECT_EQ(out_of_range.waitForExit(std::chrono::seconds(30)), 1) << parameter;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("refused.sqlite")));
+  ChildProcess largest_seed(
+      std::string(ASR_NODE_DIR) + "/trainer",
+      {"__name:=trainer_largest_seed",
+       "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
+       "_model_file:=" + dir.file("largest_seed.sqlite"), "_scenes:=Getraenke_Regal",
+       "_topology:=star", "_seed:=4294967295"});
+  EXPECT_EQ(largest_seed.waitForExit(std::chrono::seconds(60)), 0);
   ChildProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
                    {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
                     "_model_file:=" + model, "_topology:=star"});
@@ -202,6 +254,41 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
 
 }  // namespace
 }  // namespace asr_ism_tree
+
+TEST(NodeParameters, IntegersAreAcceptedExactlyWhenInRange) {
+  // Property over random values stored as roscpp stores them (int up to 32 bits, double beyond)
+  // and random ranges: accepted with their exact value iff in range, otherwise an InputError
+  // naming the parameter; never wrapped or truncated.
+  ros::NodeHandle node("~integer_parameters");
+  std::mt19937_64 random(3);
+  const long long edges[] = {0, -1, 1, 2147483647LL, 2147483648LL, 4294967295LL, 4294967303LL};
+  for (int trial = 0; trial < 300; ++trial) {
+    const long long value = trial % 2
+                                ? edges[random() % 7]
+                                : static_cast<long long>(random() % 10000000000ULL) - 5000000000LL;
+    if (value >= INT32_MIN && value <= INT32_MAX)
+      node.setParam("value", static_cast<int>(value));
+    else
+      node.setParam("value", static_cast<double>(value));
+    const long long a = edges[random() % 7], b = static_cast<long long>(random() % 5000000000ULL);
+    const long long min = std::min(a, b), max = std::max(a, b);
+    if (value >= min && value <= max) {
+      EXPECT_EQ(asr_common::ros_interface::integerParameter(node, "value", 0, min, max), value);
+    } else {
+      EXPECT_THROW(asr_common::ros_interface::integerParameter(node, "value", 0, min, max),
+                   asr_common::InputError)
+          << value << " in [" << min << ", " << max << "]";
+    }
+  }
+  node.setParam("value", 2.5);
+  EXPECT_THROW(asr_common::ros_interface::integerParameter(node, "value", 0, 0, 10),
+               asr_common::InputError);
+  node.setParam("value", std::string("7"));
+  EXPECT_THROW(asr_common::ros_interface::integerParameter(node, "value", 0, 0, 10),
+               asr_common::InputError);
+  node.deleteParam("value");
+  EXPECT_EQ(asr_common::ros_interface::integerParameter(node, "value", 42, 0, 10), 42);
+}
 
 int main(int argc, char** argv) {
   return asr_common::testing::runRostests(argc, argv, "scene_recognizer_rostest");

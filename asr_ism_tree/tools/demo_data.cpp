@@ -105,9 +105,7 @@ int run(const std::vector<std::string>& arguments) {
   using asr_common::cli::UsageError;
   const asr_common::cli::CommandLine options(arguments, {"out", "seed"}, {"force"});
   const fs::path out = options.required("out");
-  const long long seed = options.integer("seed", 1);
-  if (seed > 0xffffffffLL)
-    throw UsageError{"--seed must fit in 32 bits"};
+  const long long seed = options.integer("seed", 1, 0, 0xffffffffLL);
   const bool force = options.flag("force");
 
   const fs::path demonstration_path = out / "breakfast.sqlite";

@@ -57,8 +57,22 @@ int runInfo(const std::vector<std::string>& arguments) {
   if (scenes.empty()) {
     throw asr_common::InputError(model_path + ": contains no ISM tree model");
   }
-  for (const std::string& scene : scenes)
-    printTree(sqlite::loadIsmTree(model_path, scene));
+  // Every scene is described; one that cannot be used is named with the reason, and the exit
+  // code says that the file is not all usable.
+  std::size_t invalid = 0;
+  for (const std::string& scene : scenes) {
+    try {
+      printTree(sqlite::loadIsmTree(model_path, scene));
+    } catch (const asr_ism::InputError& error) {
+      ++invalid;
+      std::cout << "scene '" << scene << "': INVALID model, recognisers refuse it: " << error.what()
+                << "\n";
+    }
+  }
+  if (invalid > 0) {
+    throw asr_ism::InputError(model_path + ": " + std::to_string(invalid) + " of " +
+                              std::to_string(scenes.size()) + " scene models are invalid");
+  }
   return 0;
 }
 

@@ -32,7 +32,8 @@ void printMeasures(const char* name, const TopologyMeasures& measures) {
 TopologySelectionOptions selectionOptionsFrom(const CommandLine& options) {
   TopologySelectionOptions selection = cli::topologySelectionOptionsFrom(options, 0.0);
   selection.parameters = cli::recognitionParametersFrom(options);
-  selection.max_tree_height = static_cast<int>(options.integer("max-height", 0));
+  selection.max_tree_height =
+      static_cast<int>(options.integer("max-height", 0, 0, kMaxTreeHeightOption));
   const std::string method = options.has("method") ? options.required("method") : "hill-climbing";
   if (method == "annealing")
     selection.method = TopologySearchMethod::kSimulatedAnnealing;
@@ -93,11 +94,14 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   if (options.has("tests-out"))
     writeTestConfigurations(options.required("tests-out"), result.tests, demonstration.objects());
 
-  writeTopologyFile(topology_out, result.topology);
+  // The model first, the topology file once the model is committed: a run that is killed or
+  // fails in between leaves the previous topology file, never one whose model was not stored.
   const IsmTree tree = generateIsmTree(demonstration, result.topology, selection.parameters);
   sqlite::saveIsmTree(
       model_path, tree,
       "demonstration " + demo_path + ", topology selected by RTS (" + topology_out + ")");
+  writeTopologyFile(topology_out, result.topology);
+
   std::printf("selected a relation topology for scene '%s' from %s\n", scene.c_str(),
               demo_path.c_str());
   printResult(result, selection.max_duration_ms);

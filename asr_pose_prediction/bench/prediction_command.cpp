@@ -19,10 +19,8 @@ using asr_common::cli::UsageError;
 // A count option that must be at least `minimum`.
 std::size_t count(const CommandLine& options, const std::string& name, std::size_t fallback,
                   std::size_t minimum) {
-  const long long value = options.integer(name, static_cast<long long>(fallback));
-  if (value < static_cast<long long>(minimum))
-    throw UsageError{"--" + name + " must be at least " + std::to_string(minimum)};
-  return static_cast<std::size_t>(value);
+  return static_cast<std::size_t>(options.integer(name, static_cast<long long>(fallback),
+                                                  static_cast<long long>(minimum), 100000000));
 }
 
 PredictionBenchmarkSettings settingsFrom(const CommandLine& options) {
@@ -32,10 +30,8 @@ PredictionBenchmarkSettings settingsFrom(const CommandLine& options) {
   settings.timing_sets = count(options, "timing-sets", settings.timing_sets, 1);
   settings.accuracy_sets = count(options, "accuracy-sets", settings.accuracy_sets, 0);
   settings.repetitions = static_cast<int>(count(options, "repetitions", settings.repetitions, 1));
-  const long long seed = options.integer("seed", settings.seed);
-  if (seed > std::numeric_limits<std::uint32_t>::max())
-    throw UsageError{"--seed must be below 2^32"};
-  settings.seed = static_cast<std::uint32_t>(seed);
+  settings.seed = static_cast<std::uint32_t>(
+      options.integer("seed", settings.seed, 0, std::numeric_limits<std::uint32_t>::max()));
   return settings;
 }
 

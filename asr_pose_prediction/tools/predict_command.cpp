@@ -35,16 +35,12 @@ int runPredict(const std::vector<std::string>& arguments) {
   const std::string model_path = options.required("model");
   const std::string scene = options.required("scene");
   PredictionOptions prediction_options;
-  prediction_options.samples = static_cast<std::size_t>(options.integer("samples", 100));
-  if (prediction_options.samples == 0)
-    throw UsageError{"--samples must be at least 1"};
-  const long long seed = options.integer("seed", 0);
-  if (seed > std::numeric_limits<std::uint32_t>::max())
-    throw UsageError{"--seed must be below 2^32"};
-  prediction_options.seed = static_cast<std::uint32_t>(seed);
-  prediction_options.instances = static_cast<std::size_t>(options.integer("instances", 1));
-  if (prediction_options.instances == 0)
-    throw UsageError{"--instances must be at least 1"};
+  prediction_options.samples =
+      static_cast<std::size_t>(options.integer("samples", 100, 1, kMaxSamples));
+  prediction_options.seed = static_cast<std::uint32_t>(
+      options.integer("seed", 0, 0, std::numeric_limits<std::uint32_t>::max()));
+  prediction_options.instances =
+      static_cast<std::size_t>(options.integer("instances", 1, 1, kMaxInstances));
 
   const asr_ism_tree::IsmTree tree = asr_ism_tree::sqlite::loadIsmTree(model_path, scene);
   const PosePredictor predictor(tree);

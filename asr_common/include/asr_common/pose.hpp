@@ -33,7 +33,8 @@ double angleBetween(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b);
 Eigen::Quaterniond canonicalQuaternion(const Eigen::Quaterniond& q);
 
 /// Validates a pose a user supplied and returns it canonicalised. Throws InputError naming
-/// `what` for non-finite values, a zero quaternion or one whose norm is far from 1 (more than
+/// `what` for non-finite values, a coordinate beyond kMaxCoordinate (input_limits.hpp), a zero
+/// quaternion or one whose norm is far from 1 (more than
 /// `norm_tolerance`); small rounding deviations are normalised away.
 Pose validatedPose(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                    const std::string& what, double norm_tolerance = 1e-3);

@@ -1,5 +1,6 @@
 #include "asr_common/cli/command_line.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -51,17 +52,23 @@ double CommandLine::number(const std::string& name, double fallback) const {
   return value;
 }
 
-long long CommandLine::integer(const std::string& name, long long fallback) const {
+long long CommandLine::integer(const std::string& name, long long fallback, long long min,
+                               long long max) const {
   const auto found = values_.find(name);
   if (found == values_.end())
     return fallback;
+  const std::string& text = found->second;
+  const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
   char* end = nullptr;
   errno = 0;
-  const long long value = std::strtoll(found->second.c_str(), &end, 10);
-  if (found->second.empty() || *end != '\0' || value < 0 || errno == ERANGE) {
-    throw UsageError{"option --" + name + " needs a non-negative integer, not '" + found->second +
-                     "'"};
-  }
+  const long long value = std::strtoll(text.c_str(), &end, 10);
+  // strtoll would skip leading blanks and accept a sign before them; a plain integer only.
+  const bool digits_first = !text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) ||
+                                              (text[0] == '-' && text.size() > 1));
+  if (!digits_first || *end != '\0')
+    throw UsageError{"option --" + name + " needs an integer in " + range + ", not '" + text + "'"};
+  if (errno == ERANGE || value < min || value > max)
+    throw UsageError{"option --" + name + " is out of range: " + text + " is not in " + range};
   return value;
 }
 

@@ -9,7 +9,8 @@ namespace asr_ism {
 /// Reads an object configuration from a YAML or JSON file of the form
 ///   objects: [{type, id, pose: {position: {x, y, z}, orientation: {x, y, z, w}}}]
 /// (geometry_msgs field names; `id` may be left out). Throws InputError naming the file and the
-/// object for a missing file, malformed YAML/JSON, a missing field, a non-number, a non-finite
+/// object for a missing file, malformed YAML/JSON, content after the objects (trailing text, a
+/// second document), a key given twice, a missing field, a non-number, a non-finite
 /// value, a zero or unnormalised quaternion, or an empty type.
 Configuration readConfigurationFile(const std::string& path);
 

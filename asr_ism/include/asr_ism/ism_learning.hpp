@@ -18,8 +18,8 @@ struct MemberTrajectory {
 /// Learns one ISM: for every member and every time step in which both the member and the
 /// reference are observed, the pose of the reference in the member's frame. Equal relative poses
 /// (within 1e-9 m and 1e-9 rad) are stored once with their step count, which changes no vote.
-/// Throws InputError if trajectories differ in length or a member never co-occurs with the
-/// reference.
+/// Throws InputError if trajectories differ in length, a member never co-occurs with the
+/// reference, or is ever more than kMaxRelationLength from it (an outlier pose).
 Ism learnIsm(const std::string& name, const ObjectKey& reference,
              const Trajectory& reference_trajectory, const std::vector<MemberTrajectory>& members);
 

@@ -32,6 +32,8 @@ class VotingSpace {
 
   /// The integer cell of a coordinate.
   static std::int64_t cellOf(double coordinate, double bin_size);
+  /// The largest |coordinate| of a point the space holds with bins of `bin_size`.
+  static double maxCoordinate(double bin_size);
 
  private:
   int findBin(std::uint64_t key) const;

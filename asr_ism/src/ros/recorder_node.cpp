@@ -2,6 +2,7 @@
 
 #include <std_msgs/UInt32.h>
 
+#include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
 #include "asr_common/ros/queue_sizes.hpp"
 
@@ -21,11 +22,9 @@ RecorderNode::RecorderNode(ros::NodeHandle node, ros::NodeHandle private_node)
   checkParameter(private_node_, "mode",
                  mode_ == "service" || mode_ == "interval" || mode_ == "message",
                  "service, interval or message");
-  const double interval = optionalParameter<double>(private_node_, "interval", 1.0);
-  checkParameter(private_node_, "interval", interval > 0.0, "> 0 s");
-  estimate_timeout_ = optionalParameter<double>(private_node_, "estimate_timeout", 2.0);
-  checkParameter(private_node_, "estimate_timeout", estimate_timeout_ >= 0.0,
-                 ">= 0 s (0: estimates never expire)");
+  const double interval = numberParameter(private_node_, "interval", 1.0, 0.001, 86400.0);
+  // 0: estimates never expire.
+  estimate_timeout_ = numberParameter(private_node_, "estimate_timeout", 2.0, 0.0, 1e9);
   writer_ = std::make_unique<sqlite::DemonstrationWriter>(file);
 
   recorded_publisher_ =
@@ -79,6 +78,10 @@ bool RecorderNode::recordService(asr_msgs::RecordConfiguration::Request& request
 }
 
 void RecorderNode::receive(const asr_msgs::ObjectEstimateList& message) {
+  guardCallback("recorder: objects", [&] { store(message); });
+}
+
+void RecorderNode::store(const asr_msgs::ObjectEstimateList& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   Configuration configuration;
   for (const asr_msgs::ObjectEstimate& estimate : message.objects) {
@@ -98,6 +101,10 @@ void RecorderNode::receive(const asr_msgs::ObjectEstimateList& message) {
 }
 
 void RecorderNode::tick(const ros::TimerEvent&) {
+  guardCallback("recorder: interval recording", [&] { recordLatest(); });
+}
+
+void RecorderNode::recordLatest() {
   std::lock_guard<std::mutex> lock(mutex_);
   const Configuration configuration = latest_.current(ros::Time::now().toSec(), estimate_timeout_);
   if (configuration.empty())

@@ -18,8 +18,7 @@ using namespace asr_common::ros_interface;
 ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : node_(node) {
   const auto file = requiredParameter<std::string>(private_node, "demonstration_file");
   const auto scene = requiredParameter<std::string>(private_node, "scene");
-  rate_ = optionalParameter<double>(private_node, "rate", rate_);
-  checkParameter(private_node, "rate", rate_ > 0.0 && rate_ <= 1000.0, "in (0, 1000] sets/s");
+  rate_ = numberParameter(private_node, "rate", rate_, 0.001, 1000.0);
   loop_ = optionalParameter<bool>(private_node, "loop", loop_);
   wait_for_subscribers_ =
       optionalParameter<bool>(private_node, "wait_for_subscribers", wait_for_subscribers_);

@@ -48,8 +48,8 @@ std::int64_t patternId(Database& db, const std::string& path, const std::string&
 
 // The scene's objects in order of first appearance (by pose id), so the order follows the
 // recording, and the index of each recorded_objects id among them: two rows for one
-// (type, observedId) are the same object recorded twice.
-std::vector<ObjectKey> sceneObjects(Database& db, std::int64_t pattern_id,
+// (type, observedId) are the same object recorded twice. Throws for a NULL or empty type.
+std::vector<ObjectKey> sceneObjects(Database& db, std::int64_t pattern_id, const std::string& where,
                                     std::map<std::int64_t, std::size_t>& object_index) {
   Statement objects = db.prepare(
       "SELECT o.id, o.type, o.observedId FROM recorded_objects o "
@@ -59,6 +59,10 @@ std::vector<ObjectKey> sceneObjects(Database& db, std::int64_t pattern_id,
   objects.bind(1, pattern_id);
   std::vector<ObjectKey> keys;
   while (objects.step()) {
+    if (objects.isNull(1) || objects.columnText(1).empty()) {
+      throw InputError(where + ", recorded_objects id " + std::to_string(objects.columnInt(0)) +
+                       ": the type is " + (objects.isNull(1) ? "NULL" : "empty"));
+    }
     const ObjectKey key{objects.columnText(1), objects.columnText(2)};
     const auto existing = std::find(keys.begin(), keys.end(), key);
     object_index[objects.columnInt(0)] = static_cast<std::size_t>(existing - keys.begin());
@@ -68,35 +72,27 @@ std::vector<ObjectKey> sceneObjects(Database& db, std::int64_t pattern_id,
   return keys;
 }
 
-// The pose of the current row of `poses` (columns 3 to 9, and 10: all numeric), checked.
+// The pose of the current row of `poses` (columns 3 to 9), checked.
 Pose rowPose(Statement& poses, const std::string& row) {
-  for (int column = 3; column <= 9; ++column) {
-    if (poses.isNull(column))
-      throw InputError(row + ": a pose value is missing (NULL, as SQLite stores a NaN)");
-  }
-  // SQLite would read text in a pose column as 0 without complaint.
-  if (poses.columnInt(10) == 0)
-    throw InputError(row + ": a pose value is not a number");
-  return validatedPose(
-      Eigen::Vector3d(poses.columnDouble(3), poses.columnDouble(4), poses.columnDouble(5)),
-      Eigen::Quaterniond(poses.columnDouble(6), poses.columnDouble(7), poses.columnDouble(8),
-                         poses.columnDouble(9)),
-      row);
+  double values[7];
+  for (int column = 3; column <= 9; ++column)
+    values[column - 3] = poses.columnNumber(column, row);
+  return validatedPose(Eigen::Vector3d(values[0], values[1], values[2]),
+                       Eigen::Quaterniond(values[3], values[4], values[5], values[6]), row);
 }
 
+// Every pose of the scene into its step and object; throws for a pose of an unknown object or a
+// second pose of one object in one set.
 void readPoses(Database& db, std::int64_t pattern_id, const std::string& where,
                const std::map<std::int64_t, std::size_t>& object_index,
                const std::map<std::int64_t, std::size_t>& step_of_set,
                Demonstration& demonstration) {
-  // Column 10 flags rows where every pose value is stored as a number.
-  std::string all_numeric = "1";
-  for (const char* column : {"px", "py", "pz", "qw", "qx", "qy", "qz"})
-    all_numeric += std::string(" AND typeof(p.") + column + ") IN ('real', 'integer')";
   Statement poses = db.prepare(
-      "SELECT p.id, p.objectId, p.setId, p.px, p.py, p.pz, p.qw, p.qx, p.qy, p.qz, " + all_numeric +
-      " FROM recorded_poses p JOIN recorded_sets s ON s.id = p.setId "
+      "SELECT p.id, p.objectId, p.setId, p.px, p.py, p.pz, p.qw, p.qx, p.qy, p.qz "
+      "FROM recorded_poses p JOIN recorded_sets s ON s.id = p.setId "
       "WHERE s.patternId = ? ORDER BY p.id");
   poses.bind(1, pattern_id);
+  std::map<std::pair<std::size_t, std::size_t>, std::int64_t> pose_of;  // (step, object) -> id
   while (poses.step()) {
     const std::string row = where + ", recorded_poses id " + std::to_string(poses.columnInt(0));
     const Pose pose = rowPose(poses, row);
@@ -105,7 +101,17 @@ void readPoses(Database& db, std::int64_t pattern_id, const std::string& where,
       throw InputError(row + ": object id " + std::to_string(poses.columnInt(1)) +
                        " is not in recorded_objects");
     }
-    demonstration.setPose(step_of_set.at(poses.columnInt(2)), object->second, pose);
+    const std::size_t step = step_of_set.at(poses.columnInt(2));
+    const auto [earlier, first] =
+        pose_of.emplace(std::make_pair(step, object->second), poses.columnInt(0));
+    if (!first) {
+      throw InputError(row + ": a second pose of " +
+                       demonstration.objects()[object->second].toString() +
+                       " in recorded_sets id " + std::to_string(poses.columnInt(2)) +
+                       " (the first is recorded_poses id " + std::to_string(earlier->second) +
+                       "); one object has one pose per set");
+    }
+    demonstration.setPose(step, object->second, pose);
   }
 }
 
@@ -115,16 +121,16 @@ Demonstration readDemonstration(const std::string& path, const std::string& scen
   Database db(path, Database::Mode::kReadOnly);
   requireOriginalSchema(db);
   const std::int64_t pattern_id = patternId(db, path, scene);
+  const std::string where = path + ", scene '" + scene + "'";
   std::map<std::int64_t, std::size_t> object_index;
-  Demonstration demonstration(scene, sceneObjects(db, pattern_id, object_index));
+  Demonstration demonstration(scene, sceneObjects(db, pattern_id, where, object_index));
 
   Statement sets = db.prepare("SELECT id FROM recorded_sets WHERE patternId = ? ORDER BY id");
   sets.bind(1, pattern_id);
   std::map<std::int64_t, std::size_t> step_of_set;
   while (sets.step())
     step_of_set[sets.columnInt(0)] = demonstration.addStep();
-  readPoses(db, pattern_id, path + ", scene '" + scene + "'", object_index, step_of_set,
-            demonstration);
+  readPoses(db, pattern_id, where, object_index, step_of_set, demonstration);
   demonstration.validate(path);
   return demonstration;
 }

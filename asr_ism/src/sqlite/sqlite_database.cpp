@@ -68,6 +68,16 @@ double Statement::columnDouble(int column) const {
   return sqlite3_column_double(statement_, column);
 }
 
+double Statement::columnNumber(int column, const std::string& row) const {
+  const int type = sqlite3_column_type(statement_, column);
+  if (type == SQLITE_FLOAT || type == SQLITE_INTEGER)
+    return sqlite3_column_double(statement_, column);
+  const std::string name = row + ": column " + sqlite3_column_name(statement_, column);
+  if (type == SQLITE_NULL)
+    throw InputError(name + " is missing (NULL, as SQLite stores a NaN)");
+  throw InputError(name + " is not a number ('" + columnText(column) + "')");
+}
+
 std::int64_t Statement::columnInt(int column) const {
   return sqlite3_column_int64(statement_, column);
 }
@@ -77,26 +87,71 @@ std::string Statement::columnText(int column) const {
   return text == nullptr ? std::string() : std::string(reinterpret_cast<const char*>(text));
 }
 
-Database::Database(const std::string& path, Mode mode) : path_(path) {
+namespace {
+
+bool fileExists(const std::string& path) {
   struct stat info;
-  if (mode == Mode::kReadOnly && stat(path.c_str(), &info) != 0) {
+  return stat(path.c_str(), &info) == 0;
+}
+
+// Opens `path` with `flags` and reads the schema, which is where SQLite notices a file that is
+// not a database, or a hot journal. Returns the SQLite result code; *db is closed on failure.
+int openAndRead(const std::string& path, int flags, sqlite3** db, std::string& message) {
+  if (sqlite3_open_v2(path.c_str(), db, flags, nullptr) != SQLITE_OK) {
+    message = *db ? sqlite3_errmsg(*db) : "out of memory";
+    sqlite3_close(*db);
+    *db = nullptr;
+    return SQLITE_CANTOPEN;
+  }
+  sqlite3_extended_result_codes(*db, 1);
+  sqlite3_busy_timeout(*db, 5000);
+  const int code =
+      sqlite3_exec(*db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+  if (code != SQLITE_OK) {
+    message = sqlite3_errmsg(*db);
+    sqlite3_close(*db);
+    *db = nullptr;
+  }
+  return code;
+}
+
+// A process killed while writing leaves its rollback journal ("<file>-journal"): the file is
+// intact once the journal is rolled back, but a read-only connection may not do that. Rolls it
+// back the way any writer would (SQLite does so only for a journal no live writer holds).
+bool rollBackHotJournal(const std::string& path) {
+  sqlite3* db = nullptr;
+  std::string ignored;
+  const bool done = openAndRead(path, SQLITE_OPEN_READWRITE, &db, ignored) == SQLITE_OK;
+  sqlite3_close(db);
+  return done;
+}
+
+}  // namespace
+
+Database::Database(const std::string& path, Mode mode) : path_(path) {
+  if (mode == Mode::kReadOnly && !fileExists(path)) {
     throw InputError(path + ": no such file");
   }
   const int flags =
       mode == Mode::kReadOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
-  if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
-    const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
-    sqlite3_close(db_);
+  std::string message;
+  int code = openAndRead(path, flags, &db_, message);
+  const std::string journal = path + "-journal";
+  // SQLITE_READONLY_ROLLBACK, or SQLITE_READONLY where SQLite cannot tell it apart.
+  if ((code & 0xff) == SQLITE_READONLY && fileExists(journal)) {
+    if (!rollBackHotJournal(path)) {
+      throw InputError(path + ": holds an unfinished write (the rollback journal " + journal +
+                       " of a process killed while writing), and this user may not roll it "
+                       "back. Keep the journal (deleting it can corrupt the file) and open the "
+                       "file once as a user who may write it and its folder, e.g. `sqlite3 " +
+                       path + " 'PRAGMA integrity_check'`");
+    }
+    code = openAndRead(path, flags, &db_, message);
+  }
+  if (code == SQLITE_CANTOPEN)
     throw InputError(path + ": cannot open as SQLite database: " + message);
-  }
-  sqlite3_busy_timeout(db_, 5000);
-  // A file that is not SQLite opens fine but fails on the first read: check now.
-  try {
-    execute("SELECT count(*) FROM sqlite_master");
-  } catch (const InputError&) {
-    sqlite3_close(db_);
-    throw InputError(path + ": not an SQLite database");
-  }
+  if (code != SQLITE_OK)
+    throw InputError(path + ": not an SQLite database (" + message + ")");
 }
 
 Database::~Database() {

@@ -34,8 +34,12 @@ struct IsmTree {
   /// The member of `parent[ism]` that stands for ISM `ism`.
   int placeholderMemberInParent(int ism) const;
 
-  /// Throws InputError naming `what` if the links are inconsistent (a loaded model was edited).
+  /// Throws InputError naming `what` if the links are inconsistent (a loaded model was edited), or
+  /// if validateExtent does.
   void validate(const std::string& what) const;
+  /// Throws InputError naming `what` if the parameters are outside input_limits.hpp, a relation is
+  /// longer than kMaxRelationLength, or votes could land beyond the voting space.
+  void validateExtent(const std::string& what) const;
 };
 
 }  // namespace asr_ism_tree

@@ -29,7 +29,8 @@ class SceneModels {
   const IsmTree& tree(const std::string& scene) const;
 
   /// Instances of `scenes` (all loaded ones if empty) in `configuration`, best confidence first
-  /// (ties by scene name, then as each tree ranks them). Throws InputError for a scene not loaded.
+  /// (ties by scene name, then as each tree ranks them); a scene named twice is answered once.
+  /// Throws InputError for a scene not loaded.
   std::vector<SceneInstance> recognize(const asr_common::Configuration& configuration,
                                        const std::vector<std::string>& scenes = {}) const;
 

@@ -20,26 +20,22 @@ namespace {
 using namespace asr_common::ros_interface;
 using namespace asr_ism_tree;
 
-// The search's parameters, checked; unset ones keep TopologySelectionOptions' defaults.
+// The search's parameters, checked against the suite's limits; unset ones keep
+// TopologySelectionOptions' defaults.
 TopologySelectionOptions selectionParameters(const ros::NodeHandle& parameters) {
   TopologySelectionOptions selection;
-  const int tests =
-      optionalParameter<int>(parameters, "tests", static_cast<int>(selection.test_count));
-  checkParameter(parameters, "tests", tests >= 1, ">= 1");
-  selection.test_count = static_cast<std::size_t>(tests);
-  selection.seed = static_cast<std::uint32_t>(
-      optionalParameter<int>(parameters, "seed", static_cast<int>(selection.seed)));
-  selection.alpha = optionalParameter<double>(parameters, "alpha", selection.alpha);
-  selection.beta = optionalParameter<double>(parameters, "beta", selection.beta);
-  checkParameter(parameters, "alpha", selection.alpha >= 0, ">= 0");
-  checkParameter(parameters, "beta", selection.beta >= 0, ">= 0");
+  selection.test_count = static_cast<std::size_t>(integerParameter(
+      parameters, "tests", static_cast<long long>(selection.test_count), 1, kMaxTestCount));
+  selection.seed =
+      static_cast<std::uint32_t>(integerParameter(parameters, "seed", selection.seed, 0, kMaxSeed));
+  selection.alpha = numberParameter(parameters, "alpha", selection.alpha, 0.0, 1e6);
+  selection.beta = numberParameter(parameters, "beta", selection.beta, 0.0, 1e6);
+  checkParameter(parameters, "alpha", selection.alpha + selection.beta > 0, "> 0 if beta is 0");
   selection.max_duration_ms =
-      optionalParameter<double>(parameters, "max_duration_ms", selection.max_duration_ms);
-  checkParameter(parameters, "max_duration_ms", selection.max_duration_ms >= 0, ">= 0");
-  const int evaluations = optionalParameter<int>(parameters, "max_evaluations",
-                                                 static_cast<int>(selection.max_evaluations));
-  checkParameter(parameters, "max_evaluations", evaluations >= 2, ">= 2");
-  selection.max_evaluations = static_cast<std::size_t>(evaluations);
+      numberParameter(parameters, "max_duration_ms", selection.max_duration_ms, 0.0, 1e6);
+  selection.max_evaluations = static_cast<std::size_t>(
+      integerParameter(parameters, "max_evaluations",
+                       static_cast<long long>(selection.max_evaluations), 2, kMaxEvaluations));
   return selection;
 }
 

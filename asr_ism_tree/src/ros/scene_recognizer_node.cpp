@@ -5,6 +5,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "asr_common/input_error.hpp"
+#include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
 #include "asr_common/ros/queue_sizes.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
@@ -24,11 +25,9 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
                  "set to the model files to load (a list, or one file)");
   scenes_ = stringListParameter(private_node_, "scenes");
   const bool continuous = optionalParameter<bool>(private_node_, "continuous", true);
-  const double rate = optionalParameter<double>(private_node_, "rate", 10.0);
-  checkParameter(private_node_, "rate", rate > 0.0 && rate <= 1000.0, "in (0, 1000] Hz");
-  estimate_timeout_ = optionalParameter<double>(private_node_, "estimate_timeout", 5.0);
-  checkParameter(private_node_, "estimate_timeout", estimate_timeout_ >= 0.0,
-                 ">= 0 s (0: estimates never expire)");
+  const double rate = numberParameter(private_node_, "rate", 10.0, 0.001, 1000.0);
+  // 0: estimates never expire.
+  estimate_timeout_ = numberParameter(private_node_, "estimate_timeout", 5.0, 0.0, 1e9);
   models_ = SceneModels::load(model_files_, scenes_);
 
   instances_publisher_ =
@@ -102,6 +101,10 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
 }
 
 void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
+  asr_common::ros_interface::guardCallback("scene_recognizer: objects", [&] { store(message); });
+}
+
+void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
   std::lock_guard<std::mutex> lock(mutex_);
   const std::size_t rejected_before = intake_.rejectedCount();
   for (const asr_msgs::ObjectEstimate& estimate : message.objects) {
@@ -115,6 +118,11 @@ void SceneRecognizerNode::receive(const asr_msgs::ObjectEstimateList& message) {
 }
 
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
+  asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition",
+                                           [&] { recognizeLatest(); });
+}
+
+void SceneRecognizerNode::recognizeLatest() {
   std::lock_guard<std::mutex> lock(mutex_);
   const asr_common::Configuration configuration =
       latest_.current(ros::Time::now().toSec(), estimate_timeout_);

@@ -1,8 +1,10 @@
 #include "asr_ism_tree/sqlite/model_store.hpp"
 
+#include <cmath>
 #include <ctime>
 
 #include "asr_common/input_error.hpp"
+#include "asr_ism/input_limits.hpp"
 #include "asr_ism/sqlite/sqlite_database.hpp"
 
 namespace asr_ism_tree::sqlite {
@@ -215,6 +217,98 @@ std::vector<std::string> listModelScenes(const std::string& path) {
   return scenes;
 }
 
+namespace {
+
+RelationTopology loadTopology(Database& db, std::int64_t tree_id, const std::string& named) {
+  std::vector<ObjectKey> objects;
+  Statement object_rows = db.prepare(
+      "SELECT type, observed_id FROM asr_ism_objects WHERE tree_id = ? ORDER BY position");
+  object_rows.bind(1, tree_id);
+  while (object_rows.step())
+    objects.push_back({object_rows.columnText(0), object_rows.columnText(1)});
+  RelationTopology topology(objects);
+  Statement relation_rows =
+      db.prepare("SELECT object_a, object_b FROM asr_ism_relations WHERE tree_id = ?");
+  relation_rows.bind(1, tree_id);
+  while (relation_rows.step()) {
+    const auto a = relation_rows.columnInt(0), b = relation_rows.columnInt(1);
+    if (a < 0 || b < 0 || a == b || a >= static_cast<std::int64_t>(objects.size()) ||
+        b >= static_cast<std::int64_t>(objects.size())) {
+      throw InputError(named + ": a stored relation names no object");
+    }
+    topology.addRelation(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
+  }
+  return topology;
+}
+
+void loadIsms(Database& db, std::int64_t tree_id, const std::string& named, IsmTree& tree) {
+  Statement ism_rows = db.prepare(
+      "SELECT name, parent, level, reference_type, reference_id FROM asr_ism_isms "
+      "WHERE tree_id = ? ORDER BY position");
+  ism_rows.bind(1, tree_id);
+  while (ism_rows.step()) {
+    asr_ism::Ism ism;
+    ism.name = ism_rows.columnText(0);
+    ism.reference = {ism_rows.columnText(3), ism_rows.columnText(4)};
+    tree.isms.push_back(std::move(ism));
+    tree.parent.push_back(static_cast<int>(ism_rows.columnInt(1)));
+    tree.level.push_back(static_cast<int>(ism_rows.columnInt(2)));
+  }
+  const auto ism_index = [&](std::int64_t value) {
+    if (value < 0 || value >= static_cast<std::int64_t>(tree.isms.size()))
+      throw InputError(named + ": a stored member names no ISM");
+    return static_cast<std::size_t>(value);
+  };
+  Statement member_rows = db.prepare(
+      "SELECT ism, type, observed_id, child_ism FROM asr_ism_members WHERE tree_id = ? "
+      "ORDER BY ism, position");
+  member_rows.bind(1, tree_id);
+  while (member_rows.step()) {
+    asr_ism::IsmMember member;
+    member.object = {member_rows.columnText(1), member_rows.columnText(2)};
+    member.child_ism = static_cast<int>(member_rows.columnInt(3));
+    tree.isms[ism_index(member_rows.columnInt(0))].members.push_back(std::move(member));
+  }
+}
+
+// The stored relative poses of a tree, checked like a demonstration's poses.
+void loadRelativePoses(Database& db, std::int64_t tree_id, const std::string& named,
+                       IsmTree& tree) {
+  const auto ism_index = [&](std::int64_t value) {
+    if (value < 0 || value >= static_cast<std::int64_t>(tree.isms.size()))
+      throw InputError(named + ": a stored relative pose names no ISM");
+    return static_cast<std::size_t>(value);
+  };
+  Statement pose_rows = db.prepare(
+      "SELECT ism, member, px, py, pz, qw, qx, qy, qz, step_count, position "
+      "FROM asr_ism_relative_poses WHERE tree_id = ? ORDER BY ism, member, position");
+  pose_rows.bind(1, tree_id);
+  while (pose_rows.step()) {
+    auto& members = tree.isms[ism_index(pose_rows.columnInt(0))].members;
+    const auto m = pose_rows.columnInt(1);
+    const std::string row = named + ", asr_ism_relative_poses (ism " +
+                            std::to_string(pose_rows.columnInt(0)) + ", member " +
+                            std::to_string(m) + ", position " +
+                            std::to_string(pose_rows.columnInt(10)) + ")";
+    if (m < 0 || m >= static_cast<std::int64_t>(members.size()))
+      throw InputError(row + ": names no member");
+    double values[7];
+    for (int column = 2; column <= 8; ++column)
+      values[column - 2] = pose_rows.columnNumber(column, row);
+    const double step_count = pose_rows.columnNumber(9, row);
+    if (!(step_count >= 1 && step_count <= 4294967295.0 && step_count == std::floor(step_count)))
+      throw InputError(row + ": step_count must be a whole number >= 1");
+    asr_common::Pose pose;
+    pose.position = Eigen::Vector3d(values[0], values[1], values[2]);
+    pose.orientation = Eigen::Quaterniond(values[3], values[4], values[5], values[6]);
+    // Checked, but kept bit for bit as stored: a loaded tree recognises exactly like the learned.
+    asr_common::validatedPose(pose.position, pose.orientation, row, 1e-9);
+    members[m].relative_poses.push_back({pose, static_cast<std::uint32_t>(step_count)});
+  }
+}
+
+}  // namespace
+
 IsmTree loadIsmTree(const std::string& path, const std::string& scene) {
   Database db(path, Database::Mode::kReadOnly);
   if (!checkSchemaVersion(db)) {
@@ -230,79 +324,17 @@ IsmTree loadIsmTree(const std::string& path, const std::string& scene) {
     throw InputError(path + ": no model of scene '" + scene +
                      "' (the file has: " + (known.empty() ? "none" : known) + ")");
   }
+  const std::string named = path + ", scene '" + scene + "'";
   const std::int64_t tree_id = tree_row.columnInt(0);
   IsmTree tree;
   tree.scene = scene;
-  tree.parameters.bin_size = tree_row.columnDouble(1);
-  tree.parameters.max_angle_deviation = tree_row.columnDouble(2);
+  tree.parameters.bin_size = tree_row.columnNumber(1, named + ", asr_ism_trees");
+  tree.parameters.max_angle_deviation = tree_row.columnNumber(2, named + ", asr_ism_trees");
+  asr_ism::checkRecognitionParameters(tree.parameters, named + ", asr_ism_trees");
 
-  std::vector<ObjectKey> objects;
-  Statement object_rows = db.prepare(
-      "SELECT type, observed_id FROM asr_ism_objects WHERE tree_id = ? ORDER BY position");
-  object_rows.bind(1, tree_id);
-  while (object_rows.step())
-    objects.push_back({object_rows.columnText(0), object_rows.columnText(1)});
-  tree.topology = RelationTopology(objects);
-  Statement relation_rows =
-      db.prepare("SELECT object_a, object_b FROM asr_ism_relations WHERE tree_id = ?");
-  relation_rows.bind(1, tree_id);
-  while (relation_rows.step()) {
-    const auto a = relation_rows.columnInt(0), b = relation_rows.columnInt(1);
-    if (a < 0 || b < 0 || a == b || a >= static_cast<std::int64_t>(objects.size()) ||
-        b >= static_cast<std::int64_t>(objects.size())) {
-      throw InputError(path + ", scene '" + scene + "': a stored relation names no object");
-    }
-    tree.topology.addRelation(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
-  }
-
-  Statement ism_rows = db.prepare(
-      "SELECT name, parent, level, reference_type, reference_id FROM asr_ism_isms "
-      "WHERE tree_id = ? ORDER BY position");
-  ism_rows.bind(1, tree_id);
-  while (ism_rows.step()) {
-    asr_ism::Ism ism;
-    ism.name = ism_rows.columnText(0);
-    ism.reference = {ism_rows.columnText(3), ism_rows.columnText(4)};
-    tree.isms.push_back(std::move(ism));
-    tree.parent.push_back(static_cast<int>(ism_rows.columnInt(1)));
-    tree.level.push_back(static_cast<int>(ism_rows.columnInt(2)));
-  }
-  const auto ism_index = [&](std::int64_t value, const char* what) {
-    if (value < 0 || value >= static_cast<std::int64_t>(tree.isms.size())) {
-      throw InputError(path + ", scene '" + scene + "': a stored " + what + " names no ISM");
-    }
-    return static_cast<std::size_t>(value);
-  };
-  Statement member_rows = db.prepare(
-      "SELECT ism, type, observed_id, child_ism FROM asr_ism_members WHERE tree_id = ? "
-      "ORDER BY ism, position");
-  member_rows.bind(1, tree_id);
-  while (member_rows.step()) {
-    asr_ism::IsmMember member;
-    member.object = {member_rows.columnText(1), member_rows.columnText(2)};
-    member.child_ism = static_cast<int>(member_rows.columnInt(3));
-    tree.isms[ism_index(member_rows.columnInt(0), "member")].members.push_back(std::move(member));
-  }
-  Statement pose_rows = db.prepare(
-      "SELECT ism, member, px, py, pz, qw, qx, qy, qz, step_count FROM asr_ism_relative_poses "
-      "WHERE tree_id = ? ORDER BY ism, member, position");
-  pose_rows.bind(1, tree_id);
-  while (pose_rows.step()) {
-    auto& members = tree.isms[ism_index(pose_rows.columnInt(0), "relative pose")].members;
-    const auto m = pose_rows.columnInt(1);
-    if (m < 0 || m >= static_cast<std::int64_t>(members.size())) {
-      throw InputError(path + ", scene '" + scene + "': a stored relative pose names no member");
-    }
-    asr_common::Pose pose;
-    pose.position = Eigen::Vector3d(pose_rows.columnDouble(2), pose_rows.columnDouble(3),
-                                    pose_rows.columnDouble(4));
-    pose.orientation = Eigen::Quaterniond(pose_rows.columnDouble(5), pose_rows.columnDouble(6),
-                                          pose_rows.columnDouble(7), pose_rows.columnDouble(8));
-    // Checked, but kept bit for bit as stored: a loaded tree recognises exactly like the learned.
-    asr_common::validatedPose(pose.position, pose.orientation,
-                              path + ", scene '" + scene + "', a relative pose", 1e-9);
-    members[m].relative_poses.push_back({pose, static_cast<std::uint32_t>(pose_rows.columnInt(9))});
-  }
+  tree.topology = loadTopology(db, tree_id, named);
+  loadIsms(db, tree_id, named, tree);
+  loadRelativePoses(db, tree_id, named, tree);
   tree.validate(path);
   return tree;
 }

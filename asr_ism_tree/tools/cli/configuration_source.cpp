@@ -1,5 +1,7 @@
 #include "asr_ism_tree/cli/configuration_source.hpp"
 
+#include <limits>
+
 #include "asr_common/input_error.hpp"
 #include "asr_ism/configuration_file.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
@@ -19,9 +21,9 @@ asr_common::Configuration loadConfiguration(const asr_common::cli::CommandLine& 
     return asr_ism::readConfigurationFile(options.required("objects"));
   }
   const std::string demo_path = options.required("demo");
-  const long long set = options.integer("set", -1);
-  if (set < 0)
+  if (!options.has("set"))
     throw UsageError{"--demo needs --set K"};
+  const long long set = options.integer("set", 0, 0, std::numeric_limits<long long>::max());
   const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(demo_path, scene);
   if (static_cast<std::size_t>(set) >= demonstration.stepCount()) {
     throw asr_common::InputError(

@@ -15,6 +15,10 @@ namespace asr_pose_prediction {
 
 using asr_ism_tree::SceneInstance;
 
+/// The ranges tools and the node accept for the options below.
+constexpr long long kMaxSamples = 100000;
+constexpr long long kMaxInstances = 1000;
+
 struct PredictionOptions {
   /// Poses predicted per object, over all instances used.
   std::size_t samples = 100;

@@ -3,6 +3,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "asr_common/input_error.hpp"
+#include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
 #include "asr_common/ros/queue_sizes.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
@@ -18,12 +19,9 @@ PosePredictorNode::PosePredictorNode(ros::NodeHandle node, ros::NodeHandle priva
   const std::vector<std::string> files = stringListParameter(private_node, "model_files");
   checkParameter(private_node, "model_files", !files.empty(),
                  "set to the model files to load (a list, or one file)");
-  const int samples = optionalParameter<int>(private_node, "samples", 100);
-  checkParameter(private_node, "samples", samples >= 1 && samples <= 100000, "in [1, 100000]");
-  const int best = optionalParameter<int>(private_node, "best_instances", 1);
-  checkParameter(private_node, "best_instances", best >= 1, ">= 1");
-  const int seed = optionalParameter<int>(private_node, "seed", 0);
-  checkParameter(private_node, "seed", seed >= 0, ">= 0");
+  const long long samples = integerParameter(private_node, "samples", 100, 1, kMaxSamples);
+  const long long best = integerParameter(private_node, "best_instances", 1, 1, kMaxInstances);
+  const long long seed = integerParameter(private_node, "seed", 0, 0, 4294967295LL);
   const bool continuous = optionalParameter<bool>(private_node, "continuous", true);
   defaults_.samples = static_cast<std::size_t>(samples);
   defaults_.instances = static_cast<std::size_t>(best);
@@ -107,6 +105,11 @@ bool PosePredictorNode::predictService(asr_msgs::PredictPoses::Request& request,
 }
 
 void PosePredictorNode::receive(const asr_msgs::SceneInstanceList& list) {
+  asr_common::ros_interface::guardCallback("pose_predictor: scene_instances",
+                                           [&] { predictLatest(list); });
+}
+
+void PosePredictorNode::predictLatest(const asr_msgs::SceneInstanceList& list) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     latest_ = list;

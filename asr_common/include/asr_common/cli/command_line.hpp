@@ -27,8 +27,11 @@ class CommandLine {
   std::string optional(const std::string& name, const std::string& fallback) const;
   /// Throws UsageError naming the option if its value is not a finite number.
   double number(const std::string& name, double fallback) const;
-  /// Throws UsageError naming the option if its value is not a non-negative integer.
-  long long integer(const std::string& name, long long fallback) const;
+  /// The option's integer value, `fallback` if it is not given. Throws UsageError naming the
+  /// option and the range if the value is not an integer in [min, max]: out of range is refused,
+  /// never truncated or wrapped (the one checked integer parsing of the suite's tools).
+  long long integer(const std::string& name, long long fallback, long long min,
+                    long long max) const;
 
  private:
   std::map<std::string, std::string> values_;

@@ -2,6 +2,9 @@
 
 #include <ros/node_handle.h>
 
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,6 +39,52 @@ T optionalParameter(const ros::NodeHandle& node, const std::string& name, const 
   T value;
   if (!node.getParam(name, value))
     throw InputError("parameter " + parameterName(node, name) + " has the wrong type");
+  return value;
+}
+
+/// An optional integer parameter in [min, max] (the one checked integer parameter reading of the
+/// suite's nodes). Throws InputError naming the parameter and the range if it is not an integer
+/// or out of range: refused, never truncated or wrapped. roscpp stores integers beyond 32 bits
+/// as doubles (`_seed:=4294967295`), and its getParam(int) would cast those; a double with an
+/// integral value counts as that integer here.
+inline long long integerParameter(const ros::NodeHandle& node, const std::string& name,
+                                  long long fallback, long long min, long long max) {
+  if (!node.hasParam(name))
+    return fallback;
+  const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  XmlRpc::XmlRpcValue stored;
+  node.getParam(name, stored);
+  double value = 0.0;
+  if (stored.getType() == XmlRpc::XmlRpcValue::TypeInt)
+    value = static_cast<int>(stored);
+  else if (stored.getType() == XmlRpc::XmlRpcValue::TypeDouble)
+    value = static_cast<double>(stored);
+  if (!(stored.getType() == XmlRpc::XmlRpcValue::TypeInt ||
+        (stored.getType() == XmlRpc::XmlRpcValue::TypeDouble && std::isfinite(value) &&
+         value == std::floor(value)))) {
+    throw InputError("parameter " + parameterName(node, name) + " must be an integer in " + range);
+  }
+  // Every long long limit used here is below 2^53, so the comparison in double is exact.
+  if (!(value >= static_cast<double>(min) && value <= static_cast<double>(max))) {
+    std::ostringstream message;
+    message << std::setprecision(17) << "parameter " << parameterName(node, name)
+            << " is out of range: " << value << " is not in " << range;
+    throw InputError(message.str());
+  }
+  return static_cast<long long>(value);
+}
+
+/// An optional finite number parameter in [min, max]; throws InputError naming the parameter and
+/// the range otherwise (an integer given for a number is fine).
+inline double numberParameter(const ros::NodeHandle& node, const std::string& name, double fallback,
+                              double min, double max) {
+  const double value = optionalParameter<double>(node, name, fallback);
+  if (!(std::isfinite(value) && value >= min && value <= max)) {
+    std::ostringstream message;
+    message << "parameter " << parameterName(node, name) << " is out of range: " << value
+            << " is not in [" << min << ", " << max << "]";
+    throw InputError(message.str());
+  }
   return value;
 }
 

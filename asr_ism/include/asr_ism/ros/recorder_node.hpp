@@ -33,8 +33,11 @@ class RecorderNode {
  private:
   bool recordService(asr_msgs::RecordConfiguration::Request& request,
                      asr_msgs::RecordConfiguration::Response& response);
+  // The topic and timer callbacks guard what they call (callback_guard.hpp).
   void receive(const asr_msgs::ObjectEstimateList& message);
+  void store(const asr_msgs::ObjectEstimateList& message);
   void tick(const ros::TimerEvent& event);
+  void recordLatest();
   /// Appends one configuration; returns its set id. Throws InputError.
   std::int64_t record(const std::string& scene, const Configuration& configuration);
   void publishCounters();

@@ -15,7 +15,8 @@ std::vector<std::string> listRecordedScenes(const std::string& path);
 /// row of recorded_sets (ordered by id), the objects (recorded_objects, keyed by type and
 /// observedId) in the order they first appear, poses from recorded_poses (ordered by id).
 /// Quaternions are stored w, x, y, z. Throws InputError naming the file and the row for an
-/// unknown scene, an empty demonstration, a NaN or zero quaternion.
+/// unknown scene, an empty demonstration, a NULL or empty type, a pose value that is NULL (a NaN),
+/// text or out of range (validatedPose), or two poses of one object in one set.
 Demonstration readDemonstration(const std::string& path, const std::string& scene);
 
 }  // namespace asr_ism::sqlite

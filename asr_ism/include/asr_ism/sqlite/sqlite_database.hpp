@@ -29,6 +29,9 @@ class Statement {
 
   bool isNull(int column) const;
   double columnDouble(int column) const;
+  /// The column's value if it is stored as a number; throws InputError naming `row` and the
+  /// column for NULL (as SQLite stores a NaN) or text, which columnDouble would read as 0.
+  double columnNumber(int column, const std::string& row) const;
   std::int64_t columnInt(int column) const;
   std::string columnText(int column) const;
 

@@ -32,8 +32,11 @@ class SceneRecognizerNode {
   bool recognize(asr_msgs::RecognizeScenes::Request& request,
                  asr_msgs::RecognizeScenes::Response& response);
   bool reload(asr_msgs::ReloadModel::Request& request, asr_msgs::ReloadModel::Response& response);
+  // The topic and timer callbacks guard what they call (callback_guard.hpp).
   void receive(const asr_msgs::ObjectEstimateList& message);
+  void store(const asr_msgs::ObjectEstimateList& message);
   void tick(const ros::TimerEvent& event);
+  void recognizeLatest();
   void publishRejected();
 
   ros::NodeHandle node_;

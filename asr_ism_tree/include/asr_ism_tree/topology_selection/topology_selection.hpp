@@ -14,6 +14,14 @@ namespace asr_ism_tree {
 
 enum class TopologySearchMethod { kHillClimbing, kSimulatedAnnealing };
 
+/// The ranges tools and nodes accept for the options below: far beyond useful values (the paper
+/// uses hundreds of tests and evaluations), small enough to finish and fit in memory.
+constexpr long long kMaxTestCount = 100000;
+constexpr long long kMaxEvaluations = 1000000;
+constexpr long long kMaxTreeHeightOption = 1000;
+constexpr long long kMaxThreads = 4096;
+constexpr long long kMaxSeed = 4294967295LL;  // std::uint32_t
+
 struct TopologySelectionOptions {
   std::size_t test_count = 600;  // test configurations generated (valid + invalid)
   std::uint32_t seed = 1;

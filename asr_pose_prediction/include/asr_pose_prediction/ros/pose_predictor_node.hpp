@@ -29,7 +29,9 @@ class PosePredictorNode {
  private:
   bool predictService(asr_msgs::PredictPoses::Request& request,
                       asr_msgs::PredictPoses::Response& response);
+  // The topic callback guards what it calls (callback_guard.hpp).
   void receive(const asr_msgs::SceneInstanceList& list);
+  void predictLatest(const asr_msgs::SceneInstanceList& list);
   /// Clouds for `instances` (any scenes; best first within a scene); `message` says why there
   /// are none.
   std::vector<asr_msgs::PredictedPoseCloud> predict(const std::vector<SceneInstance>& instances,
