@@ -76,6 +76,11 @@ int runCommandMain(const std::string& program, const std::string& usage,
     std::cerr << program << ": unknown command '" << oneLine(argv[1]) << "'\n" << usage;
     return 2;
   }
+  // `program command --help` is a question, not a misspelt option: the usage, exit code 0.
+  if (asksForHelp(argc, argv)) {
+    std::cout << usage;
+    return 0;
+  }
   return runGuarded(program + " " + argv[1] + ": ", usage, command->second,
                     std::vector<std::string>(argv + 2, argv + argc));
 }
