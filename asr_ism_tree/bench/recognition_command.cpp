@@ -1,8 +1,8 @@
 #include "recognition_command.hpp"
 
-#include <fstream>
 #include <iostream>
 
+#include "asr_common/atomic_file.hpp"
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
 #include "asr_common/input_error.hpp"
@@ -18,13 +18,6 @@ namespace {
 
 using asr_common::cli::CommandLine;
 using asr_common::cli::UsageError;
-
-void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json) {
-  std::ofstream file(path, std::ios::trunc);
-  file << json.dump(2) << "\n";
-  if (!file.flush())
-    throw asr_common::InputError(path + ": cannot write the synthetic results");
-}
 
 }  // namespace
 
@@ -57,7 +50,8 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
     progress << "synthetic scaling (objects per step count)\n";
     synthetic_rows = benchmarkSyntheticScaling(settings, progress);
     if (!synthetic_json.empty()) {
-      writeJsonFile(synthetic_json, syntheticRowsToJson(synthetic_rows));
+      asr_common::writeFileAtomically(synthetic_json,
+                                      syntheticRowsToJson(synthetic_rows).dump(2) + "\n");
       progress << "synthetic rows written to " << synthetic_json << "\n";
     }
   } else if (json && !options.flag("no-synthetic")) {
@@ -65,10 +59,11 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
                 "to run it)\n";
   }
 
-  const std::vector<TargetCheck> checks = checkTargets(scene_rows, synthetic_rows, clutter_rows);
+  const std::vector<asr_common::cli::Target> checks =
+      checkTargets(scene_rows, synthetic_rows, clutter_rows);
   if (json) {
     std::cout << sceneRowsToJson(scene_rows).dump(2) << "\n";
-    printTargets(progress, checks);
+    asr_common::cli::printTargets(progress, checks);
     return 0;
   }
   std::cout << "\n";
@@ -86,7 +81,7 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
     printSyntheticTable(std::cout, synthetic_rows, settings);
     std::cout << "\n";
   }
-  printTargets(std::cout, checks);
+  asr_common::cli::printTargets(std::cout, checks);
   return 0;
 }
 

@@ -7,17 +7,13 @@
 #include "asr_common/input_error.hpp"
 #include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
+#include "asr_common/ros/queue_sizes.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_ism_tree/ros/scene_markers.hpp"
 
 namespace asr_ism_tree::ros_interface {
 
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::fixedFrameParameter;
-using asr_common::ros_interface::integerParameter;
-using asr_common::ros_interface::numberParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::stringListParameter;
+using namespace asr_common::ros_interface;
 
 SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
@@ -38,15 +34,18 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
   models_ = std::make_shared<const SceneModels>(
       SceneModels::load(model_files_, scenes_, recognition_parameters_));
 
-  instances_publisher_ = node_.advertise<asr_msgs::SceneInstanceList>("scene_instances", 10);
-  markers_publisher_ = node_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, true);
-  rejected_publisher_ = private_node_.advertise<std_msgs::UInt32>("rejected_estimates", 1, true);
+  instances_publisher_ =
+      node_.advertise<asr_msgs::SceneInstanceList>("scene_instances", kResultQueue);
+  markers_publisher_ =
+      node_.advertise<visualization_msgs::MarkerArray>("scene_markers", kLatchedQueue, true);
+  rejected_publisher_ =
+      private_node_.advertise<std_msgs::UInt32>("rejected_estimates", kLatchedQueue, true);
   publishRejected();
   recognize_service_ =
       node_.advertiseService("recognize_scenes", &SceneRecognizerNode::recognize, this);
   reload_service_ = node_.advertiseService("reload_model", &SceneRecognizerNode::reload, this);
   if (continuous) {
-    subscriber_ = node_.subscribe("objects", 100, &SceneRecognizerNode::receive, this);
+    subscriber_ = node_.subscribe("objects", kEstimateQueue, &SceneRecognizerNode::receive, this);
     timer_ = node_.createTimer(ros::Duration(1.0 / rate), &SceneRecognizerNode::tick, this);
   }
   std::string loaded;
