@@ -96,4 +96,14 @@ void ChildProcess::stop(std::chrono::duration<double> grace) {
   }
 }
 
+bool ChildProcess::killNow() {
+  if (!running())
+    return false;
+  ::kill(pid_, SIGKILL);
+  int status = 0;
+  ::waitpid(pid_, &status, 0);
+  collect(status);
+  return WIFSIGNALED(status);
+}
+
 }  // namespace asr_common

@@ -40,6 +40,15 @@ TEST(ChildProcess, AProgramThatRunsOnIsStoppedAndCollected) {
   EXPECT_EQ(child.wait(), -1) << "ended by a signal";
 }
 
+TEST(ChildProcess, KillNowEndsARunningProgramButNotAnEndedOne) {
+  ChildProcess running("/bin/sleep", {"60"});
+  EXPECT_TRUE(running.killNow());
+  EXPECT_FALSE(running.running());
+  ChildProcess ended("/bin/true", {});
+  EXPECT_EQ(ended.wait(), 0);
+  EXPECT_FALSE(ended.killNow()) << "a program that ended by itself was not killed";
+}
+
 TEST(ChildProcess, AMissingProgramIsNamed) {
   try {
     ChildProcess child("/nonexistent/node", {});

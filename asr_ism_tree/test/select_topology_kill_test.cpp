@@ -3,19 +3,15 @@
 // the new complete version, readable by read-only users, and the topology file never newer than
 // the model. The kill moments vary with the machine's speed; what is asserted does not.
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/wait.h>
 
-#include <algorithm>
 #include <chrono>
-#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <random>
-#include <thread>
 
+#include "asr_common/child_process.hpp"
 #include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
@@ -27,8 +23,6 @@
 #error "ISM_TOOL must be the path of the built ism executable (see asr_ism_tree/CMakeLists.txt)"
 #endif
 
-extern char** environ;
-
 namespace asr_ism_tree {
 namespace {
 
@@ -36,38 +30,18 @@ using asr_common::testing::fileBytes;
 using asr_common::testing::TempDir;
 using Clock = std::chrono::steady_clock;
 
-// Starts the tool with its output discarded; returns its process id.
-pid_t startTool(const std::vector<std::string>& arguments) {
-  std::vector<char*> argv;
-  std::string tool = ISM_TOOL;
-  argv.push_back(tool.data());
-  std::vector<std::string> copies = arguments;
-  for (std::string& argument : copies)
-    argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  const int error = posix_spawn(&pid, tool.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  EXPECT_EQ(error, 0) << "cannot start " << tool;
-  return error == 0 ? pid : -1;
+// Kills `tool` with SIGKILL at the first moment `now()` holds (polled without pause), or after
+// `limit`, unless it has exited before. True if it was killed.
+bool killWhen(asr_common::ChildProcess& tool, const std::function<bool()>& now,
+              std::chrono::duration<double> limit) {
+  const auto deadline = Clock::now() + limit;
+  while (Clock::now() < deadline && !now() && tool.running()) {
+  }
+  return tool.killNow();
 }
 
-// Kills `pid` with SIGKILL at the first moment `now()` holds (polled without pause), or after
-// `limit`, unless the process has exited before. True if it was killed.
-bool killWhen(pid_t pid, const std::function<bool()>& now, std::chrono::duration<double> limit) {
-  const auto deadline = Clock::now() + limit;
-  int status = 0;
-  while (Clock::now() < deadline && !now()) {
-    if (waitpid(pid, &status, WNOHANG) == pid)
-      return false;
-  }
-  kill(pid, SIGKILL);
-  waitpid(pid, &status, 0);
-  return WIFSIGNALED(status);
+asr_common::ChildProcess startTool(const std::vector<std::string>& arguments) {
+  return asr_common::ChildProcess(ISM_TOOL, arguments, "/dev/null", "/dev/null");
 }
 
 std::uintmax_t sizeOrZero(const std::string& path) {
@@ -94,118 +68,159 @@ ModelState readModel(const std::string& path, const std::string& scene) {
   return state;
 }
 
-TEST(SelectTopologyKill, ModelAndTopologyFileStayConsistentAfterSigkill) {
-  TempDir dir("asr_select_topology_kill");
-  const std::string demo = dir.file("demo.sqlite");
+// The files of one scenario: a demonstration, the files select-topology writes, and the old
+// and new states of both (old: a previous run's other topology; new: an uninterrupted run).
+struct Scenario {
+  TempDir dir{"asr_select_topology_kill"};
+  std::string scene, model, topology_file;
+  std::vector<std::string> arguments;
+  double run_seconds = 0.0;
+  ModelState new_model, old_model;
+  std::string new_topology, old_topology;
+  std::string old_model_file, old_topology_file;
+};
+
+std::vector<std::string> selectTopologyArguments(const Scenario& scenario,
+                                                 const std::string& demo) {
+  return {"select-topology",
+          "--demo",
+          demo,
+          "--scene",
+          scenario.scene,
+          "--topology-out",
+          scenario.topology_file,
+          "--model",
+          scenario.model,
+          "--tests",
+          "60",
+          "--max-evaluations",
+          "12",
+          "--seed",
+          "3",
+          "--threads",
+          "1"};
+}
+
+// The new state from one uninterrupted run, timed to spread the kills over a run's length.
+void recordNewState(Scenario& scenario) {
+  const auto start = Clock::now();
+  ASSERT_EQ(startTool(scenario.arguments).wait(), 0) << "the reference run failed";
+  scenario.run_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  scenario.new_model = readModel(scenario.model, scenario.scene);
+  scenario.new_topology = fileBytes(scenario.topology_file);
+}
+
+// The old state: a model and topology file of another topology, as a previous run leaves them.
+void recordOldState(Scenario& scenario, const asr_ism::Demonstration& demonstration) {
+  const RelationTopology star = RelationTopology::star(demonstration.objects(), 0);
+  const RelationTopology old_topology = star == scenario.new_model.topology
+                                            ? RelationTopology::complete(demonstration.objects())
+                                            : star;
+  ASSERT_FALSE(old_topology == scenario.new_model.topology);
+  scenario.old_model_file = scenario.dir.file("old_model.sqlite");
+  scenario.old_topology_file = scenario.dir.file("old_topology.txt");
+  sqlite::saveIsmTree(scenario.old_model_file, generateIsmTree(demonstration, old_topology, {}),
+                      "old");
+  writeTopologyFile(scenario.old_topology_file, old_topology);
+  scenario.old_model = readModel(scenario.old_model_file, scenario.scene);
+  scenario.old_topology = fileBytes(scenario.old_topology_file);
+}
+
+void prepare(Scenario& scenario) {
+  const std::string demo = scenario.dir.file("demo.sqlite");
   const asr_ism::Demonstration demonstration = asr_ism::makeBreakfastDemonstration(5);
   asr_ism::sqlite::appendDemonstration(demo, demonstration);
-  const std::string scene = demonstration.scene();
-  const std::string model = dir.file("model.sqlite");
-  const std::string topology_file = dir.file("topology.txt");
-  const std::vector<std::string> arguments = {"select-topology",
-                                              "--demo",
-                                              demo,
-                                              "--scene",
-                                              scene,
-                                              "--topology-out",
-                                              topology_file,
-                                              "--model",
-                                              model,
-                                              "--tests",
-                                              "60",
-                                              "--max-evaluations",
-                                              "12",
-                                              "--seed",
-                                              "3",
-                                              "--threads",
-                                              "1"};
+  scenario.scene = demonstration.scene();
+  scenario.model = scenario.dir.file("model.sqlite");
+  scenario.topology_file = scenario.dir.file("topology.txt");
+  scenario.arguments = selectTopologyArguments(scenario, demo);
+  ASSERT_NO_FATAL_FAILURE(recordNewState(scenario));
+  ASSERT_NO_FATAL_FAILURE(recordOldState(scenario, demonstration));
+}
 
-  // The new state: one uninterrupted run, timed to spread the kills over a run's length.
-  const auto start = Clock::now();
-  const pid_t reference = startTool(arguments);
-  int status = 0;
-  ASSERT_EQ(waitpid(reference, &status, 0), reference);
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the reference run failed";
-  const double run_seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  const ModelState new_model = readModel(model, scene);
-  const std::string new_topology = fileBytes(topology_file);
+// Puts the old state in place; a journal belongs to the file it was written for, not to the
+// old copy put in its place.
+void restoreOldState(const Scenario& scenario) {
+  const auto overwrite = std::filesystem::copy_options::overwrite_existing;
+  std::filesystem::copy_file(scenario.old_model_file, scenario.model, overwrite);
+  std::filesystem::copy_file(scenario.old_topology_file, scenario.topology_file, overwrite);
+  std::filesystem::remove(scenario.model + "-journal");
+}
 
-  // The old state: a model and topology file of another topology, as a previous run leaves them.
-  const RelationTopology star = RelationTopology::star(demonstration.objects(), 0);
-  const RelationTopology old_topology =
-      star == new_model.topology ? RelationTopology::complete(demonstration.objects()) : star;
-  ASSERT_FALSE(old_topology == new_model.topology);
-  const std::string old_model_file = dir.file("old_model.sqlite");
-  const std::string old_topology_file = dir.file("old_topology.txt");
-  sqlite::saveIsmTree(old_model_file, generateIsmTree(demonstration, old_topology, {}), "old");
-  writeTopologyFile(old_topology_file, old_topology);
-  const ModelState old_model = readModel(old_model_file, scene);
-  const std::string old_topology_text = fileBytes(old_topology_file);
+// Runs the tool and kills it: a third of the trials anywhere in a run (seeded), a third inside
+// the model's write (as soon as its rollback journal holds data), a third just after the
+// model's commit (when the journal is gone again), where the topology file is about to be
+// written. True if it was killed.
+bool runAndKill(const Scenario& scenario, int trial, double moment_seconds) {
+  const std::string journal = scenario.model + "-journal";
+  const auto hang_guard = std::chrono::duration<double>(60.0 + 10.0 * scenario.run_seconds);
+  asr_common::ChildProcess tool = startTool(scenario.arguments);
+  if (trial % 3 == 0) {
+    const auto moment = Clock::now() + std::chrono::duration<double>(moment_seconds);
+    return killWhen(
+        tool, [&] { return Clock::now() >= moment; }, hang_guard);
+  }
+  if (trial % 3 == 1)
+    return killWhen(
+        tool, [&] { return sizeOrZero(journal) > 0; }, hang_guard);
+  bool seen = false;
+  return killWhen(
+      tool,
+      [&] {
+        const bool exists = std::filesystem::exists(journal);
+        seen = seen || exists;
+        return seen && !exists;
+      },
+      hang_guard);
+}
 
-  // The kill moments: a third anywhere in a run (seeded), a third inside the model's write (as
-  // soon as its rollback journal holds data), a third just after the model's commit (when the
-  // journal is gone again), where the topology file is about to be written.
-  std::mt19937 random(20261125);
-  std::uniform_real_distribution<double> anywhere(0.0, 1.2 * run_seconds);
-  const std::string journal = model + "-journal";
-  const auto hang_guard = std::chrono::duration<double>(60.0 + 10.0 * run_seconds);
+struct Tally {
   int killed = 0, journals_recovered = 0, both_old = 0, both_new = 0, model_ahead = 0,
       topology_ahead = 0;
+};
+
+// Read-only users recover the model (a hot journal is rolled back); model and topology file are
+// each old or new, and the topology file is never newer than the model. A journal killed before
+// it held anything is not hot: SQLite ignores it and it stays.
+void checkAfterKill(const Scenario& scenario, Tally& tally) {
+  const std::string journal = scenario.model + "-journal";
+  const bool journal_left = std::filesystem::exists(journal);
+  const ModelState after = readModel(scenario.model, scenario.scene);
+  tally.journals_recovered += journal_left && !std::filesystem::exists(journal);
+  ASSERT_TRUE(after.present);
+  const bool model_new = after.topology == scenario.new_model.topology &&
+                         after.relative_poses == scenario.new_model.relative_poses;
+  const bool model_old = after.topology == scenario.old_model.topology &&
+                         after.relative_poses == scenario.old_model.relative_poses;
+  EXPECT_TRUE(model_new || model_old);
+  const std::string topology_text = fileBytes(scenario.topology_file);
+  const bool topology_new = topology_text == scenario.new_topology;
+  EXPECT_TRUE(topology_new || topology_text == scenario.old_topology);
+  EXPECT_FALSE(topology_new && !model_new) << "the topology file was written before its model";
+  tally.both_old += model_old && !topology_new;
+  tally.both_new += model_new && topology_new;
+  tally.model_ahead += model_new && !topology_new;
+  tally.topology_ahead += topology_new && !model_new;
+}
+
+TEST(SelectTopologyKill, ModelAndTopologyFileStayConsistentAfterSigkill) {
+  Scenario scenario;
+  ASSERT_NO_FATAL_FAILURE(prepare(scenario));
+  std::mt19937 random(20261125);
+  std::uniform_real_distribution<double> anywhere(0.0, 1.2 * scenario.run_seconds);
+  Tally tally;
   for (int trial = 0; trial < 30; ++trial) {
     SCOPED_TRACE("trial " + std::to_string(trial));
-    std::filesystem::copy_file(old_model_file, model,
-                               std::filesystem::copy_options::overwrite_existing);
-    std::filesystem::copy_file(old_topology_file, topology_file,
-                               std::filesystem::copy_options::overwrite_existing);
-    // A journal belongs to the file it was written for, not to the old copy put in its place.
-    std::filesystem::remove(journal);
-    const pid_t pid = startTool(arguments);
-    ASSERT_GT(pid, 0);
-    if (trial % 3 == 0) {
-      const auto moment = Clock::now() + std::chrono::duration<double>(anywhere(random));
-      killed += killWhen(
-          pid, [&] { return Clock::now() >= moment; }, hang_guard);
-    } else if (trial % 3 == 1) {
-      killed += killWhen(
-          pid, [&] { return sizeOrZero(journal) > 0; }, hang_guard);
-    } else {
-      bool seen = false;
-      killed += killWhen(
-          pid,
-          [&] {
-            const bool exists = std::filesystem::exists(journal);
-            seen = seen || exists;
-            return seen && !exists;
-          },
-          hang_guard);
-    }
-    const bool journal_left = std::filesystem::exists(model + "-journal");
-
-    // Read-only users recover the model (a hot journal is rolled back); it is old or new. A
-    // journal killed before it held anything is not hot: SQLite ignores it and it stays.
-    const ModelState after = readModel(model, scene);
-    journals_recovered += journal_left && !std::filesystem::exists(model + "-journal");
-    ASSERT_TRUE(after.present);
-    const bool model_new =
-        after.topology == new_model.topology && after.relative_poses == new_model.relative_poses;
-    const bool model_old =
-        after.topology == old_model.topology && after.relative_poses == old_model.relative_poses;
-    EXPECT_TRUE(model_new || model_old);
-    const std::string topology_text = fileBytes(topology_file);
-    const bool topology_new = topology_text == new_topology;
-    EXPECT_TRUE(topology_new || topology_text == old_topology_text);
-    // The topology file is written only after its model is committed.
-    EXPECT_FALSE(topology_new && !model_new);
-    both_old += model_old && !topology_new;
-    both_new += model_new && topology_new;
-    model_ahead += model_new && !topology_new;
-    topology_ahead += topology_new && !model_new;
+    restoreOldState(scenario);
+    tally.killed += runAndKill(scenario, trial, anywhere(random));
+    ASSERT_NO_FATAL_FAILURE(checkAfterKill(scenario, tally));
   }
   std::printf(
       "select-topology killed %d of 30 times (run %.2f s): %d both old, %d both new, %d model new "
       "with the old topology file, %d topology file ahead; %d hot journals rolled back\n",
-      killed, run_seconds, both_old, both_new, model_ahead, topology_ahead, journals_recovered);
-  EXPECT_GT(killed, 0) << "no run was interrupted: the test proved nothing";
+      tally.killed, scenario.run_seconds, tally.both_old, tally.both_new, tally.model_ahead,
+      tally.topology_ahead, tally.journals_recovered);
+  EXPECT_GT(tally.killed, 0) << "no run was interrupted: the test proved nothing";
 }
 
 }  // namespace

@@ -37,6 +37,10 @@ class ChildProcess {
   /// it stops its nodes first).
   void stop(std::chrono::duration<double> grace = std::chrono::seconds(2));
 
+  /// SIGKILL at once (fault tests: no chance to clean up); true if the process still ran and
+  /// the signal ended it, false if it had already ended by itself.
+  bool killNow();
+
  private:
   void collect(int status);
 
