@@ -1,0 +1,43 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "asr_robot_model/world.hpp"
+
+namespace asr_robot_model {
+
+/// The furniture and objects of a world as an OctoMap of occupied voxels (their box surfaces,
+/// which is what rays and the base footprint meet), answering free space for the base and line
+/// of sight for the camera. OctoMap stays behind this interface.
+class WorldMap {
+ public:
+  /// `resolution`: voxel edge in metres (> 0). `base_radius`: of the base's footprint;
+  /// `base_height`: how high above the floor the robot's body reaches (furniture above it, such
+  /// as a shelf board, does not block the base).
+  WorldMap(const World& world, double resolution, double base_radius, double base_height = 2.0);
+  ~WorldMap();
+  WorldMap(WorldMap&&) noexcept;
+  WorldMap& operator=(WorldMap&&) noexcept;
+
+  /// True if the base's disc at (x, y) lies in the room and meets no occupied voxel below
+  /// base_height.
+  bool baseIsFree(double x, double y) const;
+
+  /// True if the segment from `eye` to `target`'s centre crosses no occupied voxel but those of
+  /// the target itself (voxels whose centre lies within half a voxel diagonal of its box).
+  bool lineOfSight(const Eigen::Vector3d& eye, const Box& target) const;
+
+  double resolution() const;
+  /// Centres of the occupied voxels (for display).
+  std::vector<Eigen::Vector3d> occupiedVoxels() const;
+
+ private:
+  struct Octree;
+  std::unique_ptr<Octree> octree_;
+  Eigen::Vector2d room_min_, room_max_;
+  double base_radius_, base_height_;
+};
+
+}  // namespace asr_robot_model
