@@ -118,15 +118,15 @@ bool InverseKinematics::cheapestPan(double tilt, const Eigen::Vector3d& position
   double best_pan = 0.0;
   auto consider = [&](double pan) {
     const RobotState state = stateFor(pan, tilt, offset, position, heading);
+    const double seconds = motionBetween(from, state, speeds_).seconds;
+    if (seconds >= best_seconds)
+      return seconds;  // no better: its free space need not be looked up
     if (base_is_free && !base_is_free(state.x, state.y, state.yaw))
       return std::numeric_limits<double>::infinity();
-    const double seconds = motionBetween(from, state, speeds_).seconds;
-    if (seconds < best_seconds) {
-      best_seconds = seconds;
-      best = state;
-      best_pan = pan;
-      found = true;
-    }
+    best_seconds = seconds;
+    best = state;
+    best_pan = pan;
+    found = true;
     return seconds;
   };
   const double lower = robot_.pan.lower;
