@@ -86,11 +86,11 @@ int ChildProcess::wait() {
   return exit_status_;
 }
 
-void ChildProcess::stop() {
+void ChildProcess::stop(std::chrono::duration<double> grace) {
   if (pid_ <= 0)
     return;
   ::kill(pid_, SIGINT);
-  if (waitForExit(std::chrono::seconds(2)) == -1 && pid_ > 0) {
+  if (waitForExit(grace) == -1 && pid_ > 0) {
     ::kill(pid_, SIGKILL);
     wait();
   }

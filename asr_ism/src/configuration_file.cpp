@@ -30,6 +30,13 @@ double numberField(const YAML::Node& parent, const char* field, const std::strin
   }
 }
 
+// A quaternion component: one left out is 0, as in a ROS message (so `{z: 0.38, w: 0.92}` is a
+// turn about z); an all-zero quaternion is still refused by validatedPose, naming the object.
+double quaternionComponent(const YAML::Node& orientation, const char* field,
+                           const std::string& what) {
+  return orientation[field] ? numberField(orientation, field, what) : 0.0;
+}
+
 YAML::Node mapField(const YAML::Node& parent, const char* field, const std::string& what) {
   const YAML::Node node = parent[field];
   if (!node)
@@ -58,10 +65,11 @@ ObjectEstimate readObject(const YAML::Node& node, const std::string& what) {
   const YAML::Node pose = mapField(node, "pose", named);
   const YAML::Node position = mapField(pose, "position", named + " pose");
   const YAML::Node orientation = mapField(pose, "orientation", named + " pose");
-  const Eigen::Quaterniond quaternion(numberField(orientation, "w", named + " orientation"),
-                                      numberField(orientation, "x", named + " orientation"),
-                                      numberField(orientation, "y", named + " orientation"),
-                                      numberField(orientation, "z", named + " orientation"));
+  const std::string in_orientation = named + " orientation";
+  const Eigen::Quaterniond quaternion(quaternionComponent(orientation, "w", in_orientation),
+                                      quaternionComponent(orientation, "x", in_orientation),
+                                      quaternionComponent(orientation, "y", in_orientation),
+                                      quaternionComponent(orientation, "z", in_orientation));
   estimate.pose = validatedPose(Eigen::Vector3d(numberField(position, "x", named + " position"),
                                                 numberField(position, "y", named + " position"),
                                                 numberField(position, "z", named + " position")),

@@ -180,6 +180,23 @@ TEST(ConfigurationFile, NearlyUnitQuaternionIsNormalisedAndCanonical) {
   EXPECT_NEAR(read[0].pose.orientation.w(), 1.0004 / norm, 1e-15);
 }
 
+TEST(ConfigurationFile, OmittedQuaternionComponentsAreZeroAsInRosMessages) {
+  TempDir dir(kPrefix);
+  const Configuration identity =
+      readConfigurationFile(dir.write("identity.yaml", singleObject("{w: 1}")));
+  ASSERT_EQ(identity.size(), 1u);
+  EXPECT_TRUE(identity[0].pose.orientation.isApprox(Eigen::Quaterniond::Identity(), 1e-15));
+  const Configuration turned =
+      readConfigurationFile(dir.write("turned.yaml", singleObject("{z: 0.6, w: 0.8}")));
+  ASSERT_EQ(turned.size(), 1u);
+  EXPECT_TRUE(turned[0].pose.orientation.isApprox(Eigen::Quaterniond(0.8, 0, 0, 0.6), 1e-15));
+  // Left out is 0, never "whatever makes it a unit quaternion": {z: 0.6} has norm 0.6.
+  const std::string path = dir.write("short.yaml", singleObject("{z: 0.6}"));
+  const std::string message = inputErrorOf([&] { readConfigurationFile(path); });
+  EXPECT_NE(message.find("not normalised"), std::string::npos) << message;
+  EXPECT_NE(message.find("Cup:1"), std::string::npos) << message;
+}
+
 // ---- errors: each names the file, and the object where there is one ----
 
 // The message of reading `text` as a configuration file; checks that it names the file.
@@ -279,7 +296,9 @@ TEST(ConfigurationFileErrors, MissingPoseFields) {
       {"pose: {orientation: {x: 0, y: 0, z: 0, w: 1}}", "'position'"},
       {"pose: {position: {x: 1, y: 2, z: 3}}", "'orientation'"},
       {"pose: {position: {x: 1, z: 3}, orientation: {x: 0, y: 0, z: 0, w: 1}}", "'y'"},
-      {"pose: {position: {x: 1, y: 2, z: 3}, orientation: {x: 0, y: 0, z: 0}}", "'w'"},
+      // Omitted quaternion components are 0, as in ROS messages: this one is all zero.
+      {"pose: {position: {x: 1, y: 2, z: 3}, orientation: {x: 0, y: 0, z: 0}}", "zero quaternion"},
+      {"pose: {position: {x: 1, y: 2, z: 3}, orientation: {}}", "zero quaternion"},
       {"pose: [1, 2, 3]", "'pose'"},
       {"pose: {position: 3, orientation: {x: 0, y: 0, z: 0, w: 1}}", "'position'"},
   };

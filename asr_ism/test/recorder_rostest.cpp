@@ -8,6 +8,7 @@
 #include <ros/ros.h>
 #include <std_msgs/UInt32.h>
 
+#include <filesystem>
 #include <limits>
 #include <memory>
 
@@ -16,6 +17,7 @@
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/rostest_support.hpp"
 #include "asr_common/testing/temp_dir.hpp"
+#include "asr_ism/ros/bag_conversion.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
@@ -24,6 +26,7 @@ namespace asr_ism {
 namespace {
 
 using asr_common::ChildProcess;
+using asr_common::testing::Launch;
 using asr_common::testing::TempDir;
 using asr_common::testing::waitFor;
 
@@ -43,10 +46,12 @@ struct Counter {
 class RecorderNodeTest : public ::testing::Test {
  protected:
   void startRecorder(const std::string& mode) {
-    recorder_ = std::make_unique<ChildProcess>(
-        node("recorder"),
-        std::vector<std::string>{"__name:=recorder", "_demonstration_file:=" + output_,
-                                 "_scene:=Getraenke_Regal", "_mode:=" + mode});
+    // As a user starts it, with the shipped parameter file.
+    recorder_ = std::make_unique<Launch>(
+        "learn.launch",
+        std::vector<std::string>{"demonstration_file:=" + output_, "scene:=Getraenke_Regal",
+                                 "mode:=" + mode},
+        dir_.file("learn_launch.log"));
     ros::ServiceClient client =
         handle_.serviceClient<asr_msgs::RecordConfiguration>("record_configuration");
     ASSERT_TRUE(client.waitForExistence(ros::Duration(30))) << "recorder did not start";
@@ -55,7 +60,7 @@ class RecorderNodeTest : public ::testing::Test {
   TempDir dir_{"asr_recorder_rostest"};
   std::string output_ = dir_.file("recorded.sqlite");
   ros::NodeHandle handle_;
-  std::unique_ptr<ChildProcess> recorder_;
+  std::unique_ptr<Launch> recorder_;
 };
 
 TEST_F(RecorderNodeTest, AReplayedRecordingIsRecordedSetForSetAndTheFileKeepsItsRows) {
@@ -68,12 +73,15 @@ TEST_F(RecorderNodeTest, AReplayedRecordingIsRecordedSetForSetAndTheFileKeepsIts
 
   startRecorder("message");
   Counter recorded(handle_, "recorder/recorded_sets");
-  ChildProcess replay(
-      node("replay_demonstration"),
-      {"__name:=replay", "_demonstration_file:=" + source, "_scene:=Getraenke_Regal", "_rate:=40"});
+  Launch replay("replay.launch",
+                {"demonstration_file:=" + source, "scene:=Getraenke_Regal", "rate:=40"},
+                dir_.file("replay_launch.log"));
   ASSERT_TRUE(waitFor([&] { return recorded.value == original.stepCount(); }, 90))
       << recorded.value << " of " << original.stepCount() << " sets recorded";
-  EXPECT_EQ(replay.waitForExit(std::chrono::seconds(10)), 0);
+  // The launch ends by itself after the last set, and says nothing about a required node.
+  EXPECT_EQ(replay.process().waitForExit(std::chrono::seconds(60)), 0);
+  EXPECT_EQ(asr_common::testing::fileBytes(dir_.file("replay_launch.log")).find("REQUIRED"),
+            std::string::npos);
   recorder_->stop();
 
   const Demonstration copy = sqlite::readDemonstration(output_, "Getraenke_Regal");
@@ -120,7 +128,7 @@ TEST_F(RecorderNodeTest, MalformedEstimatesAreRejectedCountedAndRecordingGoesOn)
   objects.publish(list);
   ASSERT_TRUE(waitFor([&] { return rejected.value == 3 && recorded.value == 1; }, 10))
       << rejected.value << " rejected, " << recorded.value << " recorded";
-  EXPECT_TRUE(recorder_->running());
+  EXPECT_TRUE(recorder_->process().running());
 
   // The service records a given configuration too, under its own scene if named.
   ros::ServiceClient client =
@@ -136,9 +144,52 @@ TEST_F(RecorderNodeTest, MalformedEstimatesAreRejectedCountedAndRecordingGoesOn)
   EXPECT_EQ(sqlite::readDemonstration(output_, "by_service").stepCount(), 1u);
 }
 
-TEST_F(RecorderNodeTest, AMissingParameterStopsTheNodeWithAnError) {
-  ChildProcess bad(node("recorder"), {"__name:=bad_recorder", "_scene:=x"});
-  EXPECT_EQ(bad.waitForExit(std::chrono::seconds(20)), 1);
+TEST_F(RecorderNodeTest, ABadParameterStopsTheNodeNamingItAndRecordsNothing) {
+  const std::string err = dir_.file("bad_recorder.err");
+  ChildProcess missing(node("recorder"), {"__name:=bad_recorder", "_scene:=x"}, "", err);
+  EXPECT_EQ(missing.waitForExit(std::chrono::seconds(20)), 1);
+  EXPECT_NE(asr_common::testing::fileBytes(err).find("demonstration_file"), std::string::npos)
+      << asr_common::testing::fileBytes(err);
+  ChildProcess bad_mode(
+      node("recorder"),
+      {"__name:=bad_recorder", "_scene:=x", "_demonstration_file:=" + output_, "_mode:=sometimes"},
+      "", err);
+  EXPECT_EQ(bad_mode.waitForExit(std::chrono::seconds(20)), 1);
+  EXPECT_NE(asr_common::testing::fileBytes(err).find("mode"), std::string::npos)
+      << asr_common::testing::fileBytes(err);
+  EXPECT_FALSE(std::filesystem::exists(output_)) << "nothing recorded, no file created";
+}
+
+TEST_F(RecorderNodeTest, AReplayIntoABagHoldsEverySetAndDoesNotOverwriteABag) {
+  REQUIRE_RECORDINGS();
+  const std::string source = asr_common::testing::recording("story_2.sqlite");
+  const Demonstration original = sqlite::readDemonstration(source, "Getraenke_Regal");
+  const std::string bag = dir_.file("replay.bag");
+  Launch replay("replay.launch",
+                {"demonstration_file:=" + source, "scene:=Getraenke_Regal", "rate:=100",
+                 "record_bag:=true", "bag:=" + bag},
+                dir_.file("bag_launch.log"));
+  ASSERT_EQ(replay.process().waitForExit(std::chrono::seconds(120)), 0);
+  const std::string converted = dir_.file("from_bag.sqlite");
+  const auto conversion = ros_interface::convertBagToDemonstration(bag, "/objects", converted,
+                                                                   "Getraenke_Regal", "map");
+  EXPECT_EQ(conversion.messages, original.stepCount());
+  EXPECT_EQ(conversion.rejected, 0u);
+  const Demonstration copy = sqlite::readDemonstration(converted, "Getraenke_Regal");
+  ASSERT_EQ(copy.stepCount(), original.stepCount());
+  for (std::size_t step = 0; step < original.stepCount(); step += 7)
+    EXPECT_EQ(copy.configuration(step).size(), original.configuration(step).size()) << step;
+
+  // A second replay into the same bag is refused: the first recording stays as it was.
+  const auto size = std::filesystem::file_size(bag);
+  const std::string log = dir_.file("bag_again.log");
+  Launch again("replay.launch",
+               {"demonstration_file:=" + source, "scene:=Getraenke_Regal", "record_bag:=true",
+                "bag:=" + bag},
+               log);
+  ASSERT_EQ(again.process().waitForExit(std::chrono::seconds(60)), 0);
+  EXPECT_NE(asr_common::testing::fileBytes(log).find("not overwritten"), std::string::npos);
+  EXPECT_EQ(std::filesystem::file_size(bag), size);
 }
 
 }  // namespace

@@ -22,17 +22,18 @@
 #include "asr_common/testing/rostest_support.hpp"
 #include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_ism/sqlite/demonstration_writer.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
+#include "asr_ism_tree/tree_recognizer.hpp"
 
 namespace asr_ism_tree {
 namespace {
 
 using asr_common::ChildProcess;
+using asr_common::testing::Launch;
 using asr_common::testing::TempDir;
 using asr_common::testing::waitFor;
-
-constexpr double kRate = 2.0;  // Hz, in continuous mode
 
 asr_msgs::ObjectEstimate estimateMessage(const asr_common::ObjectEstimate& estimate) {
   std_msgs::Header header;
@@ -60,10 +61,11 @@ class SceneRecognizerNodeTest : public ::testing::Test {
     sqlite::saveIsmTree(other_model_,
                         generateIsmTree(muesli, RelationTopology::complete(muesli.objects()), {}),
                         "test");
-    node_ = std::make_unique<ChildProcess>(
-        std::string(ASR_NODE_DIR) + "/scene_recognizer",
-        std::vector<std::string>{"__name:=scene_recognizer", "_model_files:=" + model_,
-                                 "_rate:=" + std::to_string(kRate), "_estimate_timeout:=0"});
+    // As a user starts it, with the shipped parameter files.
+    launch_ = std::make_unique<Launch>("recognize.launch",
+                                       std::vector<std::string>{"model_files:=[" + model_ + "]",
+                                                                "rviz:=false", "predictor:=false"},
+                                       dir_.file("recognize_launch.log"));
     recognize_ = handle_.serviceClient<asr_msgs::RecognizeScenes>("recognize_scenes");
     ASSERT_TRUE(recognize_.waitForExistence(ros::Duration(30))) << "scene_recognizer did not start";
   }
@@ -80,7 +82,7 @@ class SceneRecognizerNodeTest : public ::testing::Test {
   asr_ism::Demonstration demonstration_;
   std::string model_;
   std::string other_model_;
-  std::unique_ptr<ChildProcess> node_;
+  std::unique_ptr<Launch> launch_;
   ros::NodeHandle handle_;
   ros::ServiceClient recognize_;
 };
@@ -135,29 +137,31 @@ TEST_F(SceneRecognizerNodeTest, MalformedEstimatesAreRejectedCountedAndTheNodeKe
   list.objects = {nan, zero, empty};
   objects.publish(list);
   EXPECT_TRUE(waitFor([&] { return rejected >= 6; }, 10)) << rejected;
-  EXPECT_TRUE(node_->running());
+  EXPECT_TRUE(launch_->process().running()) << "the scene_recognizer is required by the launch";
   EXPECT_FALSE(ask(demonstration_.configuration(3)).instances.empty());
 }
 
-TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesWithinTwoPeriods) {
+TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesTheInstancesOfTheLatestEstimates) {
   ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
-  ros::WallTime published;
-  ros::WallTime found;
+  bool found = false;
   ros::Subscriber instances = handle_.subscribe<asr_msgs::SceneInstanceList>(
       "scene_instances", 10, [&](const asr_msgs::SceneInstanceList::ConstPtr& list) {
-        if (!published.isZero() && found.isZero() && !list->instances.empty() &&
-            list->instances[0].scene == "Brot_Regal" && list->instances[0].confidence >= 0.99)
-          found = ros::WallTime::now();
+        found = found || (!list->instances.empty() && list->instances[0].scene == "Brot_Regal" &&
+                          list->instances[0].confidence >= 0.99);
       });
   ASSERT_TRUE(waitFor(
       [&] { return objects.getNumSubscribers() > 0 && instances.getNumPublishers() > 0; }, 30));
-  asr_msgs::ObjectEstimateList list;
-  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(12))
-    list.objects.push_back(estimateMessage(estimate));
-  published = ros::WallTime::now();
-  objects.publish(list);
-  ASSERT_TRUE(waitFor([&] { return !found.isZero(); }, 10)) << "no instance published";
-  EXPECT_LE((found - published).toSec(), 2.0 / kRate);
+  // Published again, freshly stamped, until an instance comes: how soon it comes depends on the
+  // machine; that it comes does not.
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(60);
+  while (!found && ros::WallTime::now() < deadline) {
+    asr_msgs::ObjectEstimateList list;
+    for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(12))
+      list.objects.push_back(estimateMessage(estimate));
+    objects.publish(list);
+    waitFor([&] { return found; }, 0.5);
+  }
+  EXPECT_TRUE(found) << "no Brot_Regal instance published";
 }
 
 TEST_F(SceneRecognizerNodeTest, AFarEstimateInContinuousModeIsRejectedAndRecognitionGoesOn) {
@@ -185,7 +189,7 @@ TEST_F(SceneRecognizerNodeTest, AFarEstimateInContinuousModeIsRejectedAndRecogni
   objects.publish(list);
   EXPECT_TRUE(waitFor([&] { return recognised; }, 10)) << rejected << " rejected";
   EXPECT_EQ(rejected, 1u);
-  EXPECT_TRUE(node_->running());
+  EXPECT_TRUE(launch_->process().running()) << "the scene_recognizer is required by the launch";
 }
 
 TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
@@ -211,19 +215,32 @@ TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
 TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
   REQUIRE_RECORDINGS();
   TempDir dir("asr_trainer_rostest");
-  const std::string model = dir.file("trained.sqlite");
+  // A demonstration file with one scene, so the trainer learns every scene of it.
+  const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(
+      asr_common::testing::recording("story_2.sqlite"), "Getraenke_Regal");
+  const std::string demonstration_file = dir.file("getraenke.sqlite");
+  asr_ism::sqlite::appendDemonstration(demonstration_file, demonstration);
   for (const char* topology : {"star", "optimised"}) {
-    ChildProcess trainer(
-        std::string(ASR_NODE_DIR) + "/trainer",
-        {std::string("__name:=trainer_") + topology,
-         "_demonstration_file:=" + asr_common::testing::recording("story_2.sqlite"),
-         "_model_file:=" + model, "_scenes:=Getraenke_Regal", std::string("_topology:=") + topology,
-         "_tests:=100"});
-    EXPECT_EQ(trainer.waitForExit(std::chrono::seconds(60)), 0) << topology;
+    const std::string model = dir.file(std::string(topology) + ".sqlite");
+    Launch training("learn.launch",
+                    {"train:=true", "demonstration_file:=" + demonstration_file,
+                     "model_file:=" + model, std::string("topology:=") + topology},
+                    dir.file(std::string(topology) + ".log"));
+    // The launch ends by itself when the trainer has stored the model.
+    EXPECT_EQ(training.process().waitForExit(std::chrono::minutes(5)), 0) << topology;
     const IsmTree tree = sqlite::loadIsmTree(model, "Getraenke_Regal");
-    EXPECT_TRUE(tree.topology.isConnected());
+    EXPECT_EQ(tree.scene, "Getraenke_Regal");
+    EXPECT_EQ(tree.objects(), demonstration.objects());
     if (std::string(topology) == "star")
       EXPECT_EQ(tree.isms.size(), 1u);
+    // What the trainer stored recognises every demonstrated set: the relations, the relative
+    // poses and the objects are right.
+    const TreeRecognizer recognizer(tree);
+    for (std::size_t step = 0; step < demonstration.stepCount(); ++step) {
+      const auto instances = recognizer.recognize(demonstration.configuration(step));
+      ASSERT_FALSE(instances.empty()) << topology << " set " << step;
+      EXPECT_GE(instances[0].confidence, 0.99) << topology << " set " << step;
+    }
   }
   // Numbers out of range are refused, not wrapped: -1 used to become seed 4294967295, and a
   // seed beyond 32 bits (stored by roscpp as a double) or 10^9 tests would have run.
@@ -246,10 +263,15 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
        "_model_file:=" + dir.file("largest_seed.sqlite"), "_scenes:=Getraenke_Regal",
        "_topology:=star", "_seed:=4294967295"});
   EXPECT_EQ(largest_seed.waitForExit(std::chrono::seconds(60)), 0);
-  ChildProcess bad(std::string(ASR_NODE_DIR) + "/trainer",
-                   {"__name:=trainer_bad", "_demonstration_file:=" + dir.file("missing.sqlite"),
-                    "_model_file:=" + model, "_topology:=star"});
-  EXPECT_EQ(bad.waitForExit(std::chrono::seconds(30)), 1);
+  // A missing demonstration file: the trainer says so, the launch ends, no model is written.
+  const std::string log = dir.file("bad.log");
+  Launch bad("learn.launch",
+             {"train:=true", "demonstration_file:=" + dir.file("missing.sqlite"),
+              "model_file:=" + dir.file("bad.sqlite"), "topology:=star"},
+             log);
+  EXPECT_EQ(bad.process().waitForExit(std::chrono::minutes(1)), 0);
+  EXPECT_NE(asr_common::testing::fileBytes(log).find("missing.sqlite"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("bad.sqlite")));
 }
 
 }  // namespace

@@ -321,6 +321,9 @@ TEST_F(TopologySelectionOnRecordings, TestConfigurationsAreLabelledStoredAndRead
 
 TEST_F(TopologySelectionOnRecordings, ATimeBudgetIsKeptOrTheLeastWorkIsChosen) {
   options_.max_evaluations = 20;
+  // A fixed time per comparison, as if measured: the budget's conversion into work is exact and
+  // the test does not depend on how fast or busy the machine is.
+  options_.ms_per_comparison = 2e-5;
   const TopologySelectionResult free = selectTopology(demonstration_, options_);
   EXPECT_EQ(free.max_mean_work, 0.0);
   // A budget between the star's and the complete tree's times is converted into work, and the
@@ -330,6 +333,8 @@ TEST_F(TopologySelectionOnRecordings, ATimeBudgetIsKeptOrTheLeastWorkIsChosen) {
   EXPECT_GT(budgeted.max_mean_work, 0.0);
   EXPECT_LT(budgeted.cost, TopologyCost::kOverBudget);
   EXPECT_LE(budgeted.measures.mean_work, budgeted.max_mean_work);
+  EXPECT_DOUBLE_EQ(budgeted.max_mean_work, options_.max_duration_ms / options_.ms_per_comparison);
+  EXPECT_LE(budgeted.measures.mean_ms, options_.max_duration_ms);
   // A budget nothing meets: the result is over it, and no topology costs more work than the star
   // among those a search led by work alone would reach from it.
   options_.max_duration_ms = 1e-9;

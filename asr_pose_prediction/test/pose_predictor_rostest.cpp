@@ -25,7 +25,7 @@
 namespace asr_pose_prediction {
 namespace {
 
-using asr_common::ChildProcess;
+using asr_common::testing::Launch;
 using asr_common::testing::TempDir;
 using asr_common::testing::waitFor;
 
@@ -39,10 +39,11 @@ class PosePredictorNodeTest : public ::testing::Test {
         demonstration_, asr_ism_tree::RelationTopology::complete(demonstration_.objects()), {});
     const std::string model = dir_.file("gedeck.sqlite");
     asr_ism_tree::sqlite::saveIsmTree(model, tree_, "test");
-    node_ = std::make_unique<ChildProcess>(
-        std::string(ASR_NODE_DIR) + "/pose_predictor",
-        std::vector<std::string>{"__name:=pose_predictor", "_model_files:=" + model,
-                                 "_samples:=50"});
+    // As a user starts it, with the shipped parameter file; the test plays the recogniser.
+    launch_ = std::make_unique<Launch>("recognize.launch",
+                                       std::vector<std::string>{"model_files:=[" + model + "]",
+                                                                "rviz:=false", "recognizer:=false"},
+                                       dir_.file("recognize_launch.log"));
     predict_ = handle_.serviceClient<asr_msgs::PredictPoses>("predict_poses");
     ASSERT_TRUE(predict_.waitForExistence(ros::Duration(30))) << "pose_predictor did not start";
   }
@@ -64,7 +65,7 @@ class PosePredictorNodeTest : public ::testing::Test {
   TempDir dir_{"asr_pose_predictor_rostest"};
   asr_ism::Demonstration demonstration_;
   asr_ism_tree::IsmTree tree_;
-  std::unique_ptr<ChildProcess> node_;
+  std::unique_ptr<Launch> launch_;
   ros::NodeHandle handle_;
   ros::ServiceClient predict_;
 };
@@ -123,7 +124,8 @@ TEST_F(PosePredictorNodeTest, PredictsForTheLatestInstancesOnTheTopic) {
   ASSERT_EQ(service.response.clouds.size(), 1u) << service.response.message;
   ASSERT_EQ(service.response.clouds[0].objects.size(), 1u);
   EXPECT_EQ(service.response.clouds[0].objects[0].type, demonstration_.objects()[2].type);
-  EXPECT_EQ(service.response.clouds[0].objects[0].poses.size(), 50u);  // the node's ~samples
+  EXPECT_EQ(service.response.clouds[0].objects[0].poses.size(),
+            100u);  // samples in pose_predictor.yaml
 }
 
 TEST_F(PosePredictorNodeTest, NothingToPredictFromIsSaid) {
@@ -147,7 +149,7 @@ TEST_F(PosePredictorNodeTest, NothingToPredictFromIsSaid) {
   EXPECT_TRUE(unknown.response.clouds.empty());
   EXPECT_NE(unknown.response.message.find("Kuehlschrank"), std::string::npos)
       << unknown.response.message;
-  EXPECT_TRUE(node_->running());
+  EXPECT_TRUE(launch_->process().running());
 }
 
 }  // namespace

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "asr_pose_prediction/ros/pose_cloud_message.hpp"
@@ -99,18 +101,33 @@ TEST(PredictionMarkers, NoCloudsOnlyClears) {
   EXPECT_EQ(markers.markers[0].action, visualization_msgs::Marker::DELETEALL);
 }
 
-TEST(PredictionMarkers, ATypeKeepsItsColourAndTypesDiffer) {
-  const auto cup = objectTypeColor("Cup", 1.0);
-  const auto again = objectTypeColor("Cup", 1.0);
-  const auto plate = objectTypeColor("Plate", 1.0);
-  EXPECT_EQ(cup.r, again.r);
-  EXPECT_EQ(cup.g, again.g);
-  EXPECT_EQ(cup.b, again.b);
-  EXPECT_TRUE(cup.r != plate.r || cup.g != plate.g || cup.b != plate.b);
-  for (float channel : {cup.r, cup.g, cup.b}) {
-    EXPECT_GE(channel, 0.0f);
-    EXPECT_LE(channel, 1.0f);
+TEST(PredictionMarkers, EveryArrowOfATypeHasItsColourAndTypesDiffer) {
+  const auto clouds =
+      toPoseCloudMessages(predictions(), {instance(0.9, 10), instance(0.5, 20)}, {});
+  PredictionMarkerStyle style;
+  style.alpha = 0.25;
+  const visualization_msgs::MarkerArray markers = predictionMarkers(clouds, style);
+  std::map<std::string, std::set<std::tuple<float, float, float, float>>> colours;
+  for (const auto& marker : markers.markers) {
+    if (marker.action == visualization_msgs::Marker::ADD &&
+        marker.type == visualization_msgs::Marker::ARROW) {
+      const std::string type = marker.ns.substr(marker.ns.find('/') + 1, 3);
+      colours[type].insert({marker.color.r, marker.color.g, marker.color.b, marker.color.a});
+    }
   }
+  // Cup arrows come from both instances, in one colour; the plate's is another.
+  ASSERT_EQ(colours.size(), 2u);
+  ASSERT_EQ(colours["Cup"].size(), 1u);
+  ASSERT_EQ(colours["Pla"].size(), 1u);
+  EXPECT_NE(*colours["Cup"].begin(), *colours["Pla"].begin());
+  EXPECT_EQ(std::get<3>(*colours["Cup"].begin()), 0.25f);
+  // The same colour in every run and on every platform (an FNV-1a hash, not std::hash): Cup's
+  // hue is 47 of 360 degrees, in the red-to-yellow sector (r 1, g 47/60, b 0).
+  const auto cup = objectTypeColor("Cup", 1.0);
+  EXPECT_FLOAT_EQ(cup.r, 1.0f);
+  EXPECT_NEAR(cup.g, 47.0 / 60.0, 1e-6);
+  EXPECT_FLOAT_EQ(cup.b, 0.0f);
+  EXPECT_FLOAT_EQ(cup.a, 1.0f);
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 #include "predict_command.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <limits>
+#include <set>
+#include <sstream>
 
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/timing.hpp"
@@ -25,13 +28,43 @@ std::string sourceOf(const CommandLine& options) {
                                 : options.required("demo") + " set " + options.required("set");
 }
 
+// The types of `--hide TYPE[,TYPE]`, each checked to be a type of the scene.
+std::set<std::string> hiddenTypes(const CommandLine& options, const asr_ism_tree::IsmTree& tree) {
+  std::set<std::string> hidden;
+  std::stringstream list(options.optional("hide", ""));
+  for (std::string type; std::getline(list, type, ',');) {
+    const auto& objects = tree.objects();
+    if (std::none_of(objects.begin(), objects.end(),
+                     [&](const asr_common::ObjectKey& key) { return key.type == type; })) {
+      throw asr_common::InputError("--hide: scene '" + tree.scene + "' has no object of type '" +
+                                   type + "'");
+    }
+    hidden.insert(type);
+  }
+  if (options.has("hide") && hidden.empty())
+    throw UsageError{"--hide needs TYPE[,TYPE]"};
+  return hidden;
+}
+
+// The configuration without the estimates of hidden types: what a robot that has not seen them
+// yet would have.
+asr_common::Configuration withoutTypes(asr_common::Configuration configuration,
+                                       const std::set<std::string>& hidden) {
+  configuration.erase(std::remove_if(configuration.begin(), configuration.end(),
+                                     [&](const asr_common::ObjectEstimate& estimate) {
+                                       return hidden.count(estimate.key.type) > 0;
+                                     }),
+                      configuration.end());
+  return configuration;
+}
+
 }  // namespace
 
 int runPredict(const std::vector<std::string>& arguments) {
-  const CommandLine options(
-      arguments,
-      {"model", "scene", "objects", "demo", "set", "samples", "seed", "instances", "object"},
-      {"json", "summary"});
+  const CommandLine options(arguments,
+                            {"model", "scene", "objects", "demo", "set", "hide", "samples", "seed",
+                             "instances", "object"},
+                            {"json", "summary"});
   const std::string model_path = options.required("model");
   const std::string scene = options.required("scene");
   PredictionOptions prediction_options;
@@ -48,8 +81,8 @@ int runPredict(const std::vector<std::string>& arguments) {
     prediction_options.object = tree.objects()[asr_common::resolveObjectName(
         options.required("object"), tree.objects(), "--object")];
   }
-  const asr_common::Configuration configuration =
-      asr_ism_tree::cli::loadConfiguration(options, scene);
+  const asr_common::Configuration configuration = withoutTypes(
+      asr_ism_tree::cli::loadConfiguration(options, scene), hiddenTypes(options, tree));
 
   const asr_ism_tree::TreeRecognizer recognizer(tree);
   std::vector<SceneInstance> instances = recognizer.recognize(configuration);

@@ -33,8 +33,9 @@ class ChildProcess {
   /// Waits for the process to end by itself; its exit code, or -1 if a signal ended it.
   int wait();
 
-  /// SIGINT, then SIGKILL if it still runs two seconds later.
-  void stop();
+  /// SIGINT, then SIGKILL if it still runs `grace` later (roslaunch needs longer than a node:
+  /// it stops its nodes first).
+  void stop(std::chrono::duration<double> grace = std::chrono::seconds(2));
 
  private:
   void collect(int status);

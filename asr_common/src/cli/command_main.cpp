@@ -45,6 +45,13 @@ int runCommandMain(const std::string& program, const std::string& usage,
     std::cerr << program << ": unknown command '" << oneLine(argv[1]) << "'\n" << usage;
     return 2;
   }
+  // `program command --help` is a question, not a misspelt option: the usage, exit code 0.
+  for (int i = 2; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::cout << usage;
+      return 0;
+    }
+  }
   const std::string name = program + " " + argv[1] + ": ";
   try {
     return command->second(std::vector<std::string>(argv + 2, argv + argc));

@@ -35,8 +35,15 @@ std::optional<ObjectEstimate> EstimateIntake::accept(const asr_msgs::ObjectEstim
     in.header = message.header;
     in.pose = message.pose.pose;
     try {
-      const geometry_msgs::PoseStamped out =
-          buffer_.transform(in, fixed_frame_, transform_timeout_);
+      // Without a timeout, the lookup that does not wait: tf2 logs an error for any lookup with
+      // a timeout (even zero) on a buffer no listener thread fills, e.g. a bag's.
+      const geometry_msgs::TransformStamped transform =
+          transform_timeout_.isZero()
+              ? buffer_.lookupTransform(fixed_frame_, frame, message.header.stamp)
+              : buffer_.lookupTransform(fixed_frame_, frame, message.header.stamp,
+                                        transform_timeout_);
+      geometry_msgs::PoseStamped out;
+      tf2::doTransform(in, out, transform);
       estimate.pose = fromPoseMessage(out.pose, describe(message) + " in " + fixed_frame_);
     } catch (const tf2::TransformException& error) {
       reject("no transform", describe(message) + ": " + error.what());

@@ -4,6 +4,9 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
+#include <filesystem>
+
+#include "asr_common/input_error.hpp"
 
 #include "asr_common/ros/node_parameters.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
@@ -29,6 +32,14 @@ ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : nod
   fixed_frame_ = fixedFrameParameter(private_node);
   hide_types_ = stringListParameter(private_node, "hide_types");
   demonstration_ = sqlite::readDemonstration(file, scene);
+  const auto bag = optionalParameter<std::string>(private_node, "bag", "");
+  if (!bag.empty()) {
+    if (std::filesystem::exists(bag))
+      throw asr_common::InputError("parameter " +
+                                   asr_common::ros_interface::parameterName(private_node, "bag") +
+                                   ": " + bag + " exists already; not overwritten");
+    bag_ = std::make_unique<rosbag::Bag>(bag, rosbag::bagmode::Write);
+  }
   // Large queues: a slow subscriber gets every set rather than the latest only.
   objects_publisher_ = node_.advertise<asr_msgs::ObjectEstimateList>("objects", 1000);
   markers_publisher_ =
@@ -42,7 +53,9 @@ void ReplayNode::run() {
   header.frame_id = fixed_frame_;
   header.stamp = ros::Time::now();
   markers_publisher_.publish(demonstrationMarkers(demonstration_, header));
-  if (wait_for_subscribers_) {
+  // A bag gets every set without a subscriber; without one, sets published before anyone
+  // listens would be lost.
+  if (wait_for_subscribers_ && !bag_) {
     while (ros::ok() && objects_publisher_.getNumSubscribers() == 0)
       ros::WallDuration(0.05).sleep();
   }
@@ -59,10 +72,15 @@ void ReplayNode::run() {
           list.objects.push_back(toEstimateMessage(estimate, list.header));
       }
       objects_publisher_.publish(list);
+      if (bag_)
+        bag_->write("/objects", list.header.stamp, list);
       rate.sleep();
     }
   } while (loop_ && ros::ok());
-  ROS_INFO("replay_demonstration: all %zu sets published", demonstration_.stepCount());
+  ROS_INFO("replay_demonstration: all %zu sets published%s", demonstration_.stepCount(),
+           bag_ ? (" and written to " + bag_->getFileName()).c_str() : "");
+  if (bag_)
+    bag_->close();
 }
 
 }  // namespace asr_ism::ros_interface

@@ -325,14 +325,17 @@ TopologySelectionResult selectTopology(
   // Times are taken on this thread, one topology after the other, in the least disturbed of a few
   // passes: the wall-clock times of the parallel search include the other threads' contention,
   // and on a shared machine a single pass varies by a third. Everything else is deterministic.
+  const bool timed = !(options.ms_per_comparison > 0.0);
   auto measure = [&](const RelationTopology& topology) {
     TopologyMeasures fastest;
-    for (int pass = 0; pass < kTimingPasses; ++pass) {
+    for (int pass = 0; pass < (timed ? kTimingPasses : 1); ++pass) {
       const TopologyMeasures measures = evaluateTopology(demonstration, topology, result.tests,
                                                          options.parameters, options.threshold);
       if (pass == 0 || measures.mean_ms < fastest.mean_ms)
         fastest = measures;
     }
+    if (!timed)
+      fastest.mean_ms = fastest.mean_work * options.ms_per_comparison;
     return fastest;
   };
   Evaluator evaluator(demonstration, result.tests, options, progress);

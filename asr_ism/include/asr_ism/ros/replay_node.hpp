@@ -1,6 +1,9 @@
 #pragma once
 
 #include <ros/ros.h>
+#include <rosbag/bag.h>
+
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -14,8 +17,10 @@ namespace asr_ism::ros_interface {
 /// frame, and the demonstration's trajectories on demonstration_markers (latched). Parameters
 /// (private): demonstration_file and scene (required), rate (sets per second, 2), loop (false),
 /// fixed_frame (map), wait_for_subscribers (true: start once `objects` has a subscriber, so
-/// that no set is lost), hide_types (list of object types left out of every set, e.g. to show
-/// the pose prediction of objects not seen yet). Without loop the node ends after the last set.
+/// that no set is lost; not when writing a bag), hide_types (list of object types left out of every set, e.g. to show
+/// the pose prediction of objects not seen yet), bag (a rosbag file the published sets are also
+/// written to, on /objects; refused if it exists, so no recording is overwritten; empty: none).
+/// Without loop the node ends after the last set, so a launch of it ends by itself.
 class ReplayNode {
  public:
   /// Reads and checks the parameters and the file: throws InputError naming them.
@@ -34,6 +39,7 @@ class ReplayNode {
   std::vector<std::string> hide_types_;
   ros::Publisher objects_publisher_;
   ros::Publisher markers_publisher_;
+  std::unique_ptr<rosbag::Bag> bag_;
 };
 
 }  // namespace asr_ism::ros_interface

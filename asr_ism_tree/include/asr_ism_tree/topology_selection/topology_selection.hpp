@@ -36,6 +36,10 @@ struct TopologySelectionOptions {
   /// The search stays deterministic for a given conversion; the conversion depends on the
   /// machine.
   double max_duration_ms = 0.0;
+  /// > 0: the time of one comparison in ms, used instead of timing the trees, so that the
+  /// conversion of max_duration_ms, and the result, do not depend on the machine or its load
+  /// (tests; a machine measured before). Every measure's mean_ms is then mean_work times this.
+  double ms_per_comparison = 0.0;
   double threshold = 0.99;  // confidence at which a configuration counts as recognised
   int max_tree_height = 0;  // < 1: no limit
   unsigned threads = 0;     // 0: all cores
