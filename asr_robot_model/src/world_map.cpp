@@ -62,6 +62,50 @@ WorldMap::WorldMap(const World& world, double resolution, double base_radius, do
   for (const WorldObject& object : world.objects)
     insertBoxSurface(octree_->tree, object.box);
   octree_->tree.updateInnerOccupancy();
+  computeBaseFootprintGrid();
+}
+
+// Blocks every cell that has a point within the base radius of an occupied voxel's footprint
+// (voxels from the floor to base_height): the distance between the cell's and the voxel's
+// squares is at most the radius.
+void WorldMap::computeBaseFootprintGrid() {
+  const double cell = resolution();
+  cells_x_ = static_cast<int>(std::ceil((room_max_.x() - room_min_.x()) / cell));
+  cells_y_ = static_cast<int>(std::ceil((room_max_.y() - room_min_.y()) / cell));
+  base_blocked_.assign(static_cast<std::size_t>(cells_x_) * cells_y_, false);
+  const octomap::OcTree& tree = octree_->tree;
+  const octomap::point3d low(room_min_.x() - base_radius_, room_min_.y() - base_radius_, 0.0);
+  const octomap::point3d high(room_max_.x() + base_radius_, room_max_.y() + base_radius_,
+                              base_height_);
+  for (auto leaf = tree.begin_leafs_bbx(low, high), end = tree.end_leafs_bbx(); leaf != end;
+       ++leaf) {
+    if (!tree.isNodeOccupied(*leaf))
+      continue;
+    const double half = leaf.getSize() / 2.0;
+    const int first_i = std::max(
+        0,
+        static_cast<int>(std::floor((leaf.getX() - half - base_radius_ - room_min_.x()) / cell)));
+    const int last_i = std::min(
+        cells_x_ - 1,
+        static_cast<int>(std::floor((leaf.getX() + half + base_radius_ - room_min_.x()) / cell)));
+    const int first_j = std::max(
+        0,
+        static_cast<int>(std::floor((leaf.getY() - half - base_radius_ - room_min_.y()) / cell)));
+    const int last_j = std::min(
+        cells_y_ - 1,
+        static_cast<int>(std::floor((leaf.getY() + half + base_radius_ - room_min_.y()) / cell)));
+    for (int i = first_i; i <= last_i; ++i) {
+      // Gap between the cell's and the voxel's squares along x, then y.
+      const double cell_x = room_min_.x() + (i + 0.5) * cell;
+      const double dx = std::max(std::abs(cell_x - leaf.getX()) - half - cell / 2.0, 0.0);
+      for (int j = first_j; j <= last_j; ++j) {
+        const double cell_y = room_min_.y() + (j + 0.5) * cell;
+        const double dy = std::max(std::abs(cell_y - leaf.getY()) - half - cell / 2.0, 0.0);
+        if (std::hypot(dx, dy) <= base_radius_)
+          base_blocked_[static_cast<std::size_t>(j) * cells_x_ + i] = true;
+      }
+    }
+  }
 }
 
 WorldMap::~WorldMap() = default;
@@ -78,19 +122,9 @@ bool WorldMap::baseIsFree(double x, double y) const {
   if (x - base_radius_ < room_min_.x() || x + base_radius_ > room_max_.x() ||
       y - base_radius_ < room_min_.y() || y + base_radius_ > room_max_.y())
     return false;
-  const octomap::OcTree& tree = octree_->tree;
-  const octomap::point3d low(x - base_radius_, y - base_radius_, 0.0);
-  const octomap::point3d high(x + base_radius_, y + base_radius_, base_height_);
-  for (auto leaf = tree.begin_leafs_bbx(low, high), end = tree.end_leafs_bbx(); leaf != end;
-       ++leaf) {
-    // Distance from the disc's centre to the voxel's square footprint.
-    const double half = leaf.getSize() / 2.0;
-    const double dx = std::max(std::abs(leaf.getX() - x) - half, 0.0);
-    const double dy = std::max(std::abs(leaf.getY() - y) - half, 0.0);
-    if (tree.isNodeOccupied(*leaf) && std::hypot(dx, dy) <= base_radius_)
-      return false;
-  }
-  return true;
+  const int i = std::min(cells_x_ - 1, static_cast<int>((x - room_min_.x()) / resolution()));
+  const int j = std::min(cells_y_ - 1, static_cast<int>((y - room_min_.y()) / resolution()));
+  return !base_blocked_[static_cast<std::size_t>(j) * cells_x_ + i];
 }
 
 bool WorldMap::lineOfSight(const Eigen::Vector3d& eye, const Box& target) const {

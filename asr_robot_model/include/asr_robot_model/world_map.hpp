@@ -22,7 +22,9 @@ class WorldMap {
   WorldMap& operator=(WorldMap&&) noexcept;
 
   /// True if the base's disc at (x, y) lies in the room and meets no occupied voxel below
-  /// base_height.
+  /// base_height. A lookup in a grid of the room (cells of the voxel size) computed once from
+  /// the OctoMap: a cell is blocked if a point in it lies within the base radius of an occupied
+  /// voxel's footprint, so the answer errs on the safe side by at most a cell diagonal.
   bool baseIsFree(double x, double y) const;
 
   /// True if the segment from `eye` to `target`'s centre crosses no occupied voxel but those of
@@ -35,7 +37,11 @@ class WorldMap {
 
  private:
   struct Octree;
+  void computeBaseFootprintGrid();
+
   std::unique_ptr<Octree> octree_;
+  std::vector<bool> base_blocked_;  // row-major cells over the room
+  int cells_x_ = 0, cells_y_ = 0;
   Eigen::Vector2d room_min_, room_max_;
   double base_radius_, base_height_;
 };
