@@ -29,12 +29,14 @@ std::int64_t objectiveLevel(double objective) {
 }
 
 // Votes as parallel arrays in bin order, so that a bin's neighbourhood is a few contiguous ranges.
+// Besides the vote's pose, each vote keeps where its input is (ox, oy, oz) and where the member
+// stands in the reference's frame (mx, my, mz), so a hypothesis can be carried back to the object.
 struct Votes {
-  std::vector<double> px, py, pz, qw, qx, qy, qz, weight;
+  std::vector<double> px, py, pz, qw, qx, qy, qz, weight, ox, oy, oz, mx, my, mz;
   std::vector<int> member, input, relative;
 
   void resize(std::size_t n) {
-    for (auto* column : {&px, &py, &pz, &qw, &qx, &qy, &qz, &weight})
+    for (auto* column : {&px, &py, &pz, &qw, &qx, &qy, &qz, &weight, &ox, &oy, &oz, &mx, &my, &mz})
       column->resize(n);
     for (auto* column : {&member, &input, &relative})
       column->resize(n);
@@ -56,6 +58,8 @@ struct Hypothesis {
   std::vector<double> position_compliance;
   std::vector<double> orientation_compliance;
   std::vector<int> assignment;  // per member, the matched input or -1
+  // Matches every input around it fully, one per member: nothing else can explain them better.
+  bool perfect = false;
 };
 
 // The neighbourhood of one bin, regrouped by member so a hypothesis can be abandoned as soon as
@@ -72,6 +76,9 @@ struct Neighbourhood {
   // Every member here votes from a single input, so a hypothesis that matches all of them fully
   // uses every estimate here, and anything else in the bin would only repeat part of it.
   bool one_input_per_member = false;
+  // The bin holds a vote of the ISM's reference object, which votes where it is: where a scene is
+  // seen fully, a perfect result is found in such a bin.
+  bool holds_reference_vote = false;
 };
 
 // The estimates each input stands for; an input without any stands for itself, as -(index + 1).
@@ -98,6 +105,15 @@ std::vector<int> unionOfAtoms(const std::vector<int>& input_indices,
   return atoms;
 }
 
+// The member that is the ISM's reference object, or -1.
+int referenceMember(const Ism& ism) {
+  for (std::size_t m = 0; m < ism.members.size(); ++m) {
+    if (!ism.members[m].isPlaceholder() && ism.members[m].object == ism.reference)
+      return static_cast<int>(m);
+  }
+  return -1;
+}
+
 class Search {
  public:
   Search(const Ism& ism, const Votes& votes, const std::vector<std::vector<int>>& atoms_of_input,
@@ -105,8 +121,9 @@ class Search {
       : votes_(votes),
         atoms_of_input_(atoms_of_input),
         member_count_(ism.members.size()),
+        reference_member_(referenceMember(ism)),
         stats_(stats),
-        bin_size_squared_(parameters.bin_size * parameters.bin_size),
+        support_radius_squared_(parameters.supportRadius() * parameters.supportRadius()),
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         sin_half_squared_max_angle_(sinHalfSquared(cos_half_max_angle_)) {
     vote_.resize(member_count_);
@@ -173,6 +190,9 @@ class Search {
     const auto& own = space.bins()[bin];
     n.candidates.resize(own.end - own.begin);
     std::iota(n.candidates.begin(), n.candidates.end(), own.begin);
+    n.holds_reference_vote =
+        std::any_of(n.candidates.begin(), n.candidates.end(),
+                    [&](std::uint32_t v) { return votes_.member[v] == reference_member_; });
     // In key order, so that among equally good hypotheses the first found is the one the model
     // itself prefers (the reference's own vote first), not the one the bin layout puts first.
     std::sort(n.candidates.begin(), n.candidates.end(),
@@ -205,11 +225,15 @@ class Search {
         if (vote_[m] >= 0)
           hypothesis.assignment[m] = votes_.input[vote_[m]];
       }
-      emit(std::move(hypothesis));
       // Later candidates come later in key order, and none can score more, so with one input per
-      // member they could only give a result this one makes redundant.
-      if (n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
-          std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; }))
+      // member they could only give a result with this one's inputs or fewer. This one matches
+      // every input here perfectly: its pose serves a parent as well as theirs would.
+      hypothesis.perfect =
+          n.one_input_per_member && objectiveLevel(objective) >= objectiveLevel(n.upper_bound) &&
+          std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; });
+      const bool perfect = hypothesis.perfect;
+      emit(std::move(hypothesis));
+      if (perfect)
         return;
       threshold = bar_now();
     }
@@ -229,17 +253,18 @@ class Search {
       stats_.comparisons += n.end[i] - n.begin[i];
       for (std::uint32_t k = n.begin[i]; k < n.end[i]; ++k) {
         const std::uint32_t v = n.votes[k];
-        const double dx = votes_.px[v] - cx;
-        const double dy = votes_.py[v] - cy;
-        const double dz = votes_.pz[v] - cz;
-        const double distance_squared = dx * dx + dy * dy + dz * dz;
-        if (distance_squared >= bin_size_squared_)
+        const double vote_distance_squared = squaredDistance(v, cx, cy, cz);
+        if (vote_distance_squared >= support_radius_squared_)
           continue;
         const double cos_half = std::abs(votes_.qw[v] * cw + votes_.qx[v] * cqx +
                                          votes_.qy[v] * cqy + votes_.qz[v] * cqz);
         if (cos_half <= cos_half_max_angle_)
           continue;
-        const double position = positionCompliance(distance_squared, bin_size_squared_);
+        const double object_distance_squared = objectDistanceSquared(v, c);
+        if (object_distance_squared >= support_radius_squared_)
+          continue;
+        const double position = positionCompliance(
+            std::max(vote_distance_squared, object_distance_squared), support_radius_squared_);
         const double orientation = orientationCompliance(cos_half, sin_half_squared_max_angle_);
         const double similarity = position * orientation * votes_.weight[v];
         // Near-equal votes go by key, not by where the bin layout put them.
@@ -264,11 +289,31 @@ class Search {
     return true;
   }
 
+  double squaredDistance(std::uint32_t v, double x, double y, double z) const {
+    const double dx = votes_.px[v] - x;
+    const double dy = votes_.py[v] - y;
+    const double dz = votes_.pz[v] - z;
+    return dx * dx + dy * dy + dz * dz;
+  }
+
+  // The support test at the object: hypothesis c carried through vote v's relative pose puts the
+  // member at c * inverse(relative pose); how far is that from where the member's input is? A
+  // small turn of the vote against the hypothesis moves this point by the turn times the
+  // relation's length, which the vote's own distance does not see.
+  double objectDistanceSquared(std::uint32_t v, std::uint32_t c) const {
+    const Eigen::Quaterniond hypothesis(votes_.qw[c], votes_.qx[c], votes_.qy[c], votes_.qz[c]);
+    const Eigen::Vector3d member =
+        Eigen::Vector3d(votes_.px[c], votes_.py[c], votes_.pz[c]) +
+        hypothesis * Eigen::Vector3d(votes_.mx[v], votes_.my[v], votes_.mz[v]);
+    return (member - Eigen::Vector3d(votes_.ox[v], votes_.oy[v], votes_.oz[v])).squaredNorm();
+  }
+
   const Votes& votes_;
   const std::vector<std::vector<int>>& atoms_of_input_;
   const std::size_t member_count_;
+  const int reference_member_;
   IsmRecognitionStats& stats_;
-  const double bin_size_squared_;
+  const double support_radius_squared_;
   const double cos_half_max_angle_;
   const double sin_half_squared_max_angle_;
   std::vector<int> vote_;
@@ -291,17 +336,34 @@ struct AssignmentHash {
   }
 };
 
-// What the results found so far rule out: a result that uses only estimates a better result uses
-// too would be dropped as redundant, so a bin whose votes all come from such estimates need only
-// be searched for results that beat the better one.
+// What the results found so far rule out. At the root (every result is returned), a result that
+// uses only estimates a better result uses too is dropped as redundant, so a bin whose votes all
+// come from such estimates need only be searched for results that beat the better one. Below the
+// root (the n best are passed up), a result is dropped only if a better one has the same
+// assignment: one at another pose is another placeholder for the parent, even if it explains no
+// new estimate, and dropping it lets a badly seen object pull the hypothesis away from where the
+// parent needs it. There the bar is the n-th best objective of distinct assignments found so far,
+// and a perfect result (every input around it matched fully) rules out others that use only its
+// estimates, as at the root: they could only offer a parent a pose that fits those inputs worse.
 class Bar {
  public:
-  explicit Bar(const std::vector<std::vector<int>>& atoms_of_input)
-      : atoms_of_input_(atoms_of_input) {}
+  Bar(const std::vector<std::vector<int>>& atoms_of_input, const IsmResultSelection& selection)
+      : atoms_of_input_(atoms_of_input), best_count_(selection.best_count) {}
+
+  bool dropsSubsets() const { return best_count_ == 0; }
 
   // The objective a result of a bin with this neighbourhood must reach to be selected.
   double forBin(const Neighbourhood& n) const {
     double bar = kNoThreshold;
+    if (!dropsSubsets()) {
+      // Only results better than any perfect result still possible are sure to stay; a perfect
+      // result found later could drop the others.
+      std::size_t sure = 0;
+      for (const auto& entry : best_)
+        sure += entry.objective > perfect_bound_ + kBoundMargin ? 1 : 0;
+      if (sure >= best_count_)
+        return best_[best_count_ - 1].objective;
+    }
     for (const auto& [objective, atoms] : dominators_) {
       if (objective > bar &&
           std::includes(atoms.begin(), atoms.end(), n.atoms.begin(), n.atoms.end())) {
@@ -311,110 +373,171 @@ class Bar {
     return bar;
   }
 
+  // The highest objective a perfect result of the bins not yet searched could have: the upper
+  // bound of the best such bin with one input per member (perfect results need one).
+  void setPerfectBound(double bound) { perfect_bound_ = bound; }
+
   void add(const Hypothesis& result) {
     std::vector<int> atoms = unionOfAtoms(result.assignment, atoms_of_input_);
-    for (const auto& [objective, other] : dominators_) {
-      if (objective >= result.objective &&
-          std::includes(other.begin(), other.end(), atoms.begin(), atoms.end())) {
-        return;  // the better result rules out everything this one would
-      }
+    if (dominated(result.objective, atoms))
+      return;  // a better result rules out everything this one would
+    if (!dropsSubsets()) {
+      addToBest(result, atoms);
+      if (!result.perfect)
+        return;
+      best_.erase(std::remove_if(best_.begin(), best_.end(),
+                                 [&](const BestEntry& entry) {
+                                   return entry.objective <= result.objective &&
+                                          entry.assignment != result.assignment &&
+                                          std::includes(atoms.begin(), atoms.end(),
+                                                        entry.atoms.begin(), entry.atoms.end());
+                                 }),
+                  best_.end());
     }
     dominators_.emplace_back(result.objective, std::move(atoms));
   }
 
  private:
+  struct BestEntry {
+    double objective;
+    std::vector<int> assignment;
+    std::vector<int> atoms;
+  };
+
+  bool dominated(double objective, const std::vector<int>& atoms) const {
+    return std::any_of(dominators_.begin(), dominators_.end(), [&](const auto& dominator) {
+      return dominator.first >= objective &&
+             std::includes(dominator.second.begin(), dominator.second.end(), atoms.begin(),
+                           atoms.end());
+    });
+  }
+
+  // Keeps the best_count_ best objectives of distinct assignments, best first.
+  void addToBest(const Hypothesis& result, const std::vector<int>& atoms) {
+    auto same = std::find_if(best_.begin(), best_.end(), [&](const BestEntry& entry) {
+      return entry.assignment == result.assignment;
+    });
+    if (same != best_.end()) {
+      same->objective = std::max(same->objective, result.objective);
+    } else if (best_.size() < best_count_) {
+      best_.push_back({result.objective, result.assignment, atoms});
+    } else if (result.objective > best_.back().objective) {
+      best_.back() = {result.objective, result.assignment, atoms};
+    }
+    std::sort(best_.begin(), best_.end(),
+              [](const BestEntry& a, const BestEntry& b) { return a.objective > b.objective; });
+  }
+
   const std::vector<std::vector<int>>& atoms_of_input_;
+  const std::size_t best_count_;
   std::vector<std::pair<double, std::vector<int>>> dominators_;
+  std::vector<BestEntry> best_;
+  double perfect_bound_ = std::numeric_limits<double>::infinity();
 };
 
-}  // namespace
-
-std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
-                                    const IsmRecognitionParameters& parameters,
-                                    const IsmResultSelection& selection,
-                                    IsmRecognitionStats* stats) {
+void checkInputs(const Ism& ism, const std::vector<IsmInput>& inputs,
+                 const IsmRecognitionParameters& parameters) {
   if (!(parameters.bin_size > 0.0) || !(parameters.max_angle_deviation > 0.0)) {
     throw InputError("ISM '" + ism.name + "': bin size and maximum angle deviation must be > 0");
   }
-  const std::size_t member_count = ism.members.size();
-
-  // Cast the votes: every input combined with every relative pose of its member.
-  std::size_t vote_count = 0;
   for (const IsmInput& input : inputs) {
-    if (input.member < 0 || static_cast<std::size_t>(input.member) >= member_count) {
+    if (input.member < 0 || static_cast<std::size_t>(input.member) >= ism.members.size()) {
       throw InputError("ISM '" + ism.name + "': an input names member " +
-                       std::to_string(input.member) + " of " + std::to_string(member_count));
+                       std::to_string(input.member) + " of " + std::to_string(ism.members.size()));
     }
     if (!(input.weight > 0.0)) {
       throw InputError("ISM '" + ism.name + "': input weights must be > 0");
     }
-    vote_count += ism.members[input.member].relative_poses.size();
   }
+}
+
+void setVote(Votes& votes, std::size_t v, const IsmInput& input, const Pose& relative) {
+  const Eigen::Vector3d position = input.pose.position + input.pose.orientation * relative.position;
+  const Eigen::Quaterniond orientation = input.pose.orientation * relative.orientation;
+  // Where the member stands in the reference's frame: the position of inverse(relative).
+  const Eigen::Vector3d member = -(relative.orientation.conjugate() * relative.position);
+  votes.px[v] = position.x();
+  votes.py[v] = position.y();
+  votes.pz[v] = position.z();
+  votes.qw[v] = orientation.w();
+  votes.qx[v] = orientation.x();
+  votes.qy[v] = orientation.y();
+  votes.qz[v] = orientation.z();
+  votes.weight[v] = input.weight;
+  votes.ox[v] = input.pose.position.x();
+  votes.oy[v] = input.pose.position.y();
+  votes.oz[v] = input.pose.position.z();
+  votes.mx[v] = member.x();
+  votes.my[v] = member.y();
+  votes.mz[v] = member.z();
+}
+
+// Every input combined with every relative pose of its member.
+Votes castVotes(const Ism& ism, const std::vector<IsmInput>& inputs) {
+  std::size_t vote_count = 0;
+  for (const IsmInput& input : inputs)
+    vote_count += ism.members[input.member].relative_poses.size();
   Votes cast;
   cast.resize(vote_count);
   std::size_t v = 0;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    const IsmInput& input = inputs[i];
-    const auto& relative_poses = ism.members[input.member].relative_poses;
+    const auto& relative_poses = ism.members[inputs[i].member].relative_poses;
     for (std::size_t r = 0; r < relative_poses.size(); ++r, ++v) {
-      const Pose& relative = relative_poses[r].reference_in_member;
-      const Eigen::Vector3d position =
-          input.pose.position + input.pose.orientation * relative.position;
-      const Eigen::Quaterniond orientation = input.pose.orientation * relative.orientation;
-      cast.px[v] = position.x();
-      cast.py[v] = position.y();
-      cast.pz[v] = position.z();
-      cast.qw[v] = orientation.w();
-      cast.qx[v] = orientation.x();
-      cast.qy[v] = orientation.y();
-      cast.qz[v] = orientation.z();
-      cast.weight[v] = input.weight;
-      cast.member[v] = input.member;
+      setVote(cast, v, inputs[i], relative_poses[r].reference_in_member);
+      cast.member[v] = inputs[i].member;
       cast.input[v] = static_cast<int>(i);
       cast.relative[v] = static_cast<int>(r);
     }
   }
+  return cast;
+}
 
-  const VotingSpace space(parameters.bin_size, cast.px.data(), cast.py.data(), cast.pz.data(),
-                          vote_count);
+// The votes in the space's bin order.
+Votes sortedByBin(const Votes& cast, const VotingSpace& space) {
+  const std::size_t count = cast.member.size();
   Votes votes;
-  votes.resize(vote_count);
-  for (std::size_t sorted = 0; sorted < vote_count; ++sorted) {
-    const std::uint32_t from = space.order()[sorted];
-    votes.px[sorted] = cast.px[from];
-    votes.py[sorted] = cast.py[from];
-    votes.pz[sorted] = cast.pz[from];
-    votes.qw[sorted] = cast.qw[from];
-    votes.qx[sorted] = cast.qx[from];
-    votes.qy[sorted] = cast.qy[from];
-    votes.qz[sorted] = cast.qz[from];
-    votes.weight[sorted] = cast.weight[from];
-    votes.member[sorted] = cast.member[from];
-    votes.input[sorted] = cast.input[from];
-    votes.relative[sorted] = cast.relative[from];
-  }
+  votes.resize(count);
+  const auto copy = [&](auto member) {
+    for (std::size_t sorted = 0; sorted < count; ++sorted)
+      (votes.*member)[sorted] = (cast.*member)[space.order()[sorted]];
+  };
+  for (auto column :
+       {&Votes::px, &Votes::py, &Votes::pz, &Votes::qw, &Votes::qx, &Votes::qy, &Votes::qz,
+        &Votes::weight, &Votes::ox, &Votes::oy, &Votes::oz, &Votes::mx, &Votes::my, &Votes::mz})
+    copy(column);
+  for (auto column : {&Votes::member, &Votes::input, &Votes::relative})
+    copy(column);
+  return votes;
+}
 
-  IsmRecognitionStats local_stats;
-  local_stats.votes = vote_count;
-  local_stats.bins = space.bins().size();
-  const std::vector<std::vector<int>> atoms_of_input = atomsOfInputs(inputs);
-  Search search(ism, votes, atoms_of_input, parameters, local_stats);
-
-  // Search bins with the highest upper bound first: their results raise the bar for the rest.
+// Every hypothesis that may be selected, bins with the highest upper bound first: their results
+// raise the bar for the rest.
+std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar& bar) {
   const std::size_t bin_count = space.bins().size();
   std::vector<Neighbourhood> neighbourhoods(bin_count);
   for (std::size_t b = 0; b < bin_count; ++b)
     search.gather(space, b, neighbourhoods[b]);
   std::vector<std::size_t> bin_order(bin_count);
   std::iota(bin_order.begin(), bin_order.end(), 0);
+  // Among equal bounds, bins with a vote of the reference first: a perfect result found early
+  // prunes the rest. The order changes the speed only, never the answer.
   std::stable_sort(bin_order.begin(), bin_order.end(), [&](std::size_t a, std::size_t b) {
-    return neighbourhoods[a].upper_bound > neighbourhoods[b].upper_bound;
+    const Neighbourhood& x = neighbourhoods[a];
+    const Neighbourhood& y = neighbourhoods[b];
+    if (x.upper_bound != y.upper_bound)
+      return x.upper_bound > y.upper_bound;
+    return x.holds_reference_vote && !y.holds_reference_vote;
   });
-
-  Bar bar(atoms_of_input);
+  // perfect_bound[i]: the highest bound of a bin with one input per member from position i on.
+  std::vector<double> perfect_bound(bin_count + 1, kNoThreshold);
+  for (std::size_t i = bin_count; i-- > 0;) {
+    const Neighbourhood& n = neighbourhoods[bin_order[i]];
+    perfect_bound[i] = n.one_input_per_member ? n.upper_bound : perfect_bound[i + 1];
+  }
   std::vector<Hypothesis> found;
-  for (std::size_t b : bin_order) {
-    const Neighbourhood& n = neighbourhoods[b];
+  for (std::size_t i = 0; i < bin_count; ++i) {
+    const Neighbourhood& n = neighbourhoods[bin_order[i]];
+    bar.setPerfectBound(perfect_bound[i]);
     search.searchBin(
         n, [&] { return bar.forBin(n); },
         [&](Hypothesis&& hypothesis) {
@@ -422,15 +545,36 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
           found.push_back(std::move(hypothesis));
         });
   }
-  if (stats != nullptr) {
-    stats->votes += local_stats.votes;
-    stats->bins += local_stats.bins;
-    stats->candidates += local_stats.candidates;
-    stats->comparisons += local_stats.comparisons;
-  }
+  return found;
+}
 
-  // Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
-  // nor the bin grid decides between equally good results.
+IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, std::vector<int> atoms) {
+  const int c = hypothesis.candidate;
+  IsmResult result;
+  result.reference_pose =
+      Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
+           Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c]));
+  result.objective = hypothesis.objective;
+  // Inputs that stand for themselves (negative atoms) sort first; report real estimates only.
+  result.estimates.assign(std::lower_bound(atoms.begin(), atoms.end(), 0), atoms.end());
+  result.matches.resize(hypothesis.votes.size());
+  for (std::size_t m = 0; m < hypothesis.votes.size(); ++m) {
+    const int vote = hypothesis.votes[m];
+    if (vote >= 0) {
+      result.matches[m] = {votes.input[vote], votes.relative[vote],
+                           hypothesis.position_compliance[m], hypothesis.orientation_compliance[m]};
+    }
+  }
+  return result;
+}
+
+// Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
+// nor the bin grid decides between equally good results; then one result per assignment, and none
+// whose estimates a better result uses too: at the root any better result, below it a perfect
+// one (see Bar).
+std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes& votes,
+                                     const std::vector<std::vector<int>>& atoms_of_input,
+                                     const IsmResultSelection& selection) {
   std::sort(found.begin(), found.end(), [&](const Hypothesis& a, const Hypothesis& b) {
     const std::int64_t level_a = objectiveLevel(a.objective);
     const std::int64_t level_b = objectiveLevel(b.objective);
@@ -453,26 +597,39 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
       continue;
     if (selection.best_count > 0 && results.size() >= selection.best_count)
       break;
-    kept_atoms.push_back(atoms);
-    const int c = hypothesis.candidate;
-    IsmResult result;
-    result.reference_pose =
-        Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
-             Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c]));
-    result.objective = hypothesis.objective;
-    // Inputs that stand for themselves (negative atoms) sort first; report real estimates only.
-    result.estimates.assign(std::lower_bound(atoms.begin(), atoms.end(), 0), atoms.end());
-    result.matches.resize(member_count);
-    for (std::size_t m = 0; m < member_count; ++m) {
-      const int vote = hypothesis.votes[m];
-      if (vote < 0)
-        continue;
-      result.matches[m] = {votes.input[vote], votes.relative[vote],
-                           hypothesis.position_compliance[m], hypothesis.orientation_compliance[m]};
-    }
-    results.push_back(std::move(result));
+    if (selection.best_count == 0 || hypothesis.perfect)
+      kept_atoms.push_back(atoms);
+    results.push_back(resultOf(hypothesis, votes, std::move(atoms)));
   }
   return results;
+}
+
+}  // namespace
+
+std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
+                                    const IsmRecognitionParameters& parameters,
+                                    const IsmResultSelection& selection,
+                                    IsmRecognitionStats* stats) {
+  checkInputs(ism, inputs, parameters);
+  const Votes cast = castVotes(ism, inputs);
+  const VotingSpace space(parameters.bin_size, cast.px.data(), cast.py.data(), cast.pz.data(),
+                          cast.px.size());
+  const Votes votes = sortedByBin(cast, space);
+
+  IsmRecognitionStats local_stats;
+  local_stats.votes = votes.px.size();
+  local_stats.bins = space.bins().size();
+  const std::vector<std::vector<int>> atoms_of_input = atomsOfInputs(inputs);
+  Search search(ism, votes, atoms_of_input, parameters, local_stats);
+  Bar bar(atoms_of_input, selection);
+  std::vector<Hypothesis> found = searchBins(space, search, bar);
+  if (stats != nullptr) {
+    stats->votes += local_stats.votes;
+    stats->bins += local_stats.bins;
+    stats->candidates += local_stats.candidates;
+    stats->comparisons += local_stats.comparisons;
+  }
+  return selectResults(found, votes, atoms_of_input, selection);
 }
 
 }  // namespace asr_ism

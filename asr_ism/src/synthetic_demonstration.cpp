@@ -157,17 +157,19 @@ Demonstration makeSyntheticDemonstration(std::size_t objects, std::size_t steps,
   return demonstration;
 }
 
-Demonstration makeBreakfastDemonstration(std::uint32_t seed) {
-  constexpr std::size_t kSteps = 60;
-  // The place setting in its own frame (x right, y away from the person, z up): position of each
-  // object's centre and its yaw. Cutlery lies with its long (x) axis pointing away.
-  struct Item {
-    const char* type;
-    Eigen::Vector3d position;
-    double yaw;
-    bool nudged;
-  };
-  const Item kItems[] = {
+namespace {
+
+// The place setting in its own frame (x right, y away from the person, z up): position of each
+// object's centre and its yaw. Cutlery lies with its long (x) axis pointing away.
+struct BreakfastItem {
+  const char* type;
+  Eigen::Vector3d position;
+  double yaw;
+  bool nudged;
+};
+
+const std::vector<BreakfastItem>& breakfastItems() {
+  static const std::vector<BreakfastItem> items = {
       {"PlateDeep", {0.0, 0.0, 0.02}, 0.0, false},
       {"Cup", {0.17, 0.17, 0.05}, -30.0 * kDegree, true},
       {"Fork", {-0.17, 0.0, 0.01}, 90.0 * kDegree, true},
@@ -175,8 +177,39 @@ Demonstration makeBreakfastDemonstration(std::uint32_t seed) {
       {"Spoon", {0.21, 0.0, 0.01}, 90.0 * kDegree, true},
       {"CerealBox", {-0.12, 0.30, 0.15}, 10.0 * kDegree, false},
   };
+  return items;
+}
+
+// Cup and cutlery are nudged once each: the cup by a few cm and up to 20 degrees, the cutlery
+// by 1-2 cm and a few degrees.
+std::vector<Nudge> breakfastNudges(PortableRandom& random) {
+  std::vector<Nudge> nudges;
+  for (const BreakfastItem& item : breakfastItems()) {
+    if (!item.nudged)
+      nudges.emplace_back();
+    else if (std::string(item.type) == "Cup")
+      nudges.push_back(drawNudge(random, 0.02, 0.05, 5.0 * kDegree, 20.0 * kDegree));
+    else
+      nudges.push_back(drawNudge(random, 0.01, 0.02, 2.0 * kDegree, 6.0 * kDegree));
+  }
+  return nudges;
+}
+
+// Where an item is in the setting at time t in [0, 1], with its nudge done as far as it is.
+Pose itemInSetting(const BreakfastItem& item, const Nudge& nudge, double t) {
+  const double done = smoothStep(t, nudge.moment, nudge.duration);
+  const Eigen::Vector3d position =
+      item.position + done * Eigen::Vector3d(nudge.shift.x(), nudge.shift.y(), 0.0);
+  return Pose(position, yawRotation(item.yaw + done * nudge.turn));
+}
+
+}  // namespace
+
+Demonstration makeBreakfastDemonstration(std::uint32_t seed) {
+  constexpr std::size_t kSteps = 60;
+  const std::vector<BreakfastItem>& items = breakfastItems();
   std::vector<ObjectKey> keys;
-  for (const Item& item : kItems)
+  for (const BreakfastItem& item : items)
     keys.push_back({item.type, "0"});
   Demonstration demonstration("breakfast", keys);
 
@@ -188,17 +221,7 @@ Demonstration makeBreakfastDemonstration(std::uint32_t seed) {
   const Eigen::Vector2d travel(travel_along, travel_across);
   const double start_yaw = random.uniform(-5.0, 5.0) * kDegree;
   const double turn = random.signedUniform(3.0, 8.0) * kDegree;
-  // Cup and cutlery are nudged once each: the cup by a few cm and up to 20 degrees, the cutlery
-  // by 1-2 cm and a few degrees.
-  std::vector<Nudge> nudges;
-  for (const Item& item : kItems) {
-    if (!item.nudged)
-      nudges.emplace_back();
-    else if (std::string(item.type) == "Cup")
-      nudges.push_back(drawNudge(random, 0.02, 0.05, 5.0 * kDegree, 20.0 * kDegree));
-    else
-      nudges.push_back(drawNudge(random, 0.01, 0.02, 2.0 * kDegree, 6.0 * kDegree));
-  }
+  const std::vector<Nudge> nudges = breakfastNudges(random);
 
   for (std::size_t step = 0; step < kSteps; ++step) {
     demonstration.addStep();
@@ -208,14 +231,9 @@ Demonstration makeBreakfastDemonstration(std::uint32_t seed) {
     const Pose setting(Eigen::Vector3d(origin.x(), origin.y(), kTableHeight),
                        yawRotation(start_yaw + progress * turn));
     for (std::size_t i = 0; i < keys.size(); ++i) {
-      const Item& item = kItems[i];
-      const Nudge& nudge = nudges[i];
-      const double done = smoothStep(t, nudge.moment, nudge.duration);
-      const Eigen::Vector3d position =
-          item.position + done * Eigen::Vector3d(nudge.shift.x(), nudge.shift.y(), 0.0);
-      const Pose in_setting(position, yawRotation(item.yaw + done * nudge.turn));
-      demonstration.setPose(
-          step, i, noisy(compose(setting, in_setting), random, kPositionNoise, kAngleNoise));
+      demonstration.setPose(step, i,
+                            noisy(compose(setting, itemInSetting(items[i], nudges[i], t)), random,
+                                  kPositionNoise, kAngleNoise));
     }
   }
   return demonstration;

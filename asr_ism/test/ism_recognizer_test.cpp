@@ -76,10 +76,14 @@ TEST(IsmRecognizer, PerfectConfigurationMatchesEveryMemberFully) {
   EXPECT_EQ(results.size(), 1u);
 }
 
-TEST(IsmRecognizer, ObjectMovedBeyondTheBinSizeIsUnmatched) {
+// The support radius of bins of 0.1 m: half their diagonal.
+const double kRadius = std::sqrt(3.0) / 2.0 * 0.1;
+
+TEST(IsmRecognizer, ObjectMovedBeyondTheSupportRadiusIsUnmatched) {
   const Ism ism = threeMemberIsm();
   const IsmRecognitionParameters parameters;  // bin 0.1 m
-  for (double shift : {0.101, 0.15, 0.3}) {
+  EXPECT_NEAR(parameters.supportRadius(), kRadius, 1e-15);
+  for (double shift : {0.0867, 0.1, 0.15, 0.3}) {
     auto inputs = perfectInputs(ism);
     inputs[kA].pose = movedBy(inputs[kA].pose, Eigen::Vector3d(shift, 0.0, 0.0));
     const auto results = recognizeIsm(ism, inputs, parameters);
@@ -88,12 +92,49 @@ TEST(IsmRecognizer, ObjectMovedBeyondTheBinSizeIsUnmatched) {
     EXPECT_EQ(results[0].matches[kA].similarity(), 0.0) << shift;
     EXPECT_NEAR(results[0].objective, 2.0, 1e-9) << shift;
   }
-  // Just inside the bin size it still counts, barely.
+  // Just inside the radius it still counts, barely.
   auto inputs = perfectInputs(ism);
-  inputs[kA].pose = movedBy(inputs[kA].pose, Eigen::Vector3d(0.099, 0.0, 0.0));
+  inputs[kA].pose = movedBy(inputs[kA].pose, Eigen::Vector3d(0.086, 0.0, 0.0));
   const auto results = recognizeIsm(ism, inputs, parameters);
   ASSERT_TRUE(results[0].matches[kA].matched());
-  EXPECT_NEAR(results[0].matches[kA].position_compliance, 1.0 - 0.99 * 0.99, 1e-9);
+  EXPECT_NEAR(results[0].matches[kA].position_compliance,
+              1.0 - (0.086 / kRadius) * (0.086 / kRadius), 1e-9);
+}
+
+// The support test holds at the object too. In a scene metres wide (L 3 m from the reference R,
+// B 2 m), L moved 0.2 m sideways and turned by 3.8 deg casts its vote within 7 mm and 3.8 deg
+// of the reference, so a hypothesis taken from L's vote passes R's and B's votes too. Carried
+// back through B's relation, that turned hypothesis puts B 13 cm from where it is, and the
+// hypothesis at R puts L 0.2 m from where it is: L cannot count with both others.
+TEST(IsmRecognizer, ObjectOffItsPlaceDoesNotCountEvenIfItsVoteHitsTheReference) {
+  Ism ism;
+  ism.name = "long_relations";
+  ism.reference = {"R", ""};
+  ism.members = {{{"R", ""}, -1, {{Pose::identity(), 1}}},
+                 {{"L", ""}, -1, {{makePose(3.0, 0.0, 0.0), 1}}},
+                 {{"B", ""}, -1, {{makePose(0.0, -2.0, 0.0), 1}}}};
+  const std::vector<IsmInput> exact = {{0, makePose(3.0, 0.0, 0.0), 1.0, {}},
+                                       {1, Pose::identity(), 1.0, {}},
+                                       {2, makePose(3.0, 2.0, 0.0), 1.0, {}}};
+  ASSERT_NEAR(recognizeIsm(ism, exact, {})[0].objective, 3.0, 1e-12);
+
+  std::vector<IsmInput> inputs = exact;
+  inputs[1].pose = makePose(0.0, 0.2, 0.0, -std::asin(0.2 / 3.0));
+  const Pose vote = compose(inputs[1].pose, ism.members[1].relative_poses[0].reference_in_member);
+  ASSERT_LT((vote.position - exact[0].pose.position).norm(), 0.007);
+  auto results = recognizeIsm(ism, inputs, {});
+  ASSERT_FALSE(results.empty());
+  EXPECT_FALSE(results[0].matches[1].matched());
+  EXPECT_NEAR(results[0].objective, 2.0, 1e-12);
+
+  // Turned by 1 deg in place: its vote is 5.2 cm off, and so is the object carried back.
+  inputs[1].pose = makePose(0.0, 0.0, 0.0, 1.0 * kDegree);
+  results = recognizeIsm(ism, inputs, {});
+  ASSERT_TRUE(results[0].matches[1].matched());
+  const double off = 2.0 * 3.0 * std::sin(0.5 * kDegree);
+  EXPECT_NEAR(results[0].matches[1].position_compliance, 1.0 - off * off / (kRadius * kRadius),
+              1e-6);
+  EXPECT_NEAR(results[0].objective, 2.0 + results[0].matches[1].similarity(), 1e-12);
 }
 
 TEST(IsmRecognizer, ObjectTurnedBeyondTheMaximumAngleIsUnmatched) {
@@ -119,16 +160,17 @@ TEST(IsmRecognizer, PositionComplianceAtHalfTheBinSize) {
   IsmRecognitionParameters parameters;
   parameters.bin_size = 0.2;
   auto inputs = perfectInputs(ism);
-  // A diagonal shift of length 0.1 = half the bin size: 1 - (d / b)^2 = 0.75.
+  // A diagonal shift of length 0.1 = half the bin size, against a radius of sqrt(3)/2 x 0.2:
+  // 1 - d^2 / r^2 = 1 - 0.01 / 0.03 = 2/3.
   inputs[kA].pose = movedBy(inputs[kA].pose, Eigen::Vector3d(0.06, -0.08, 0.0));
   const auto results = recognizeIsm(ism, inputs, parameters);
   ASSERT_FALSE(results.empty());
   const MemberMatch& a = results[0].matches[kA];
   ASSERT_TRUE(a.matched());
-  EXPECT_NEAR(a.position_compliance, 0.75, 1e-9);
+  EXPECT_NEAR(a.position_compliance, 2.0 / 3.0, 1e-9);
   EXPECT_NEAR(a.orientation_compliance, 1.0, 1e-9);
-  EXPECT_NEAR(a.similarity(), 0.75, 1e-9);
-  EXPECT_NEAR(results[0].objective, 2.75, 1e-9);
+  EXPECT_NEAR(a.similarity(), 2.0 / 3.0, 1e-9);
+  EXPECT_NEAR(results[0].objective, 2.0 + 2.0 / 3.0, 1e-9);
   // The hypothesis is where R and B agree, not where A's vote is.
   EXPECT_TRUE(approximatelyEqual(results[0].reference_pose, kScene, 1e-9, 1e-9));
 }
@@ -204,7 +246,7 @@ TEST(IsmRecognizer, TwoInputsForOneMemberCountOnce) {
 TEST(IsmRecognizer, BestCountCapsTheResults) {
   const Ism ism = threeMemberIsm();
   // Four copies of the scene 2 m apart; in copy k, A is off by shift[k], so copy k has objective
-  // 2 + 1 - (shift[k] / 0.1)^2. The ranks (2, 0, 3, 1) do not follow the copies' order in space,
+  // 2 + 1 - (shift[k] / r)^2. The ranks (2, 0, 3, 1) do not follow the copies' order in space,
   // so the search meets good results after worse ones.
   const double shifts[] = {0.04, 0.0, 0.06, 0.02};
   const int copy_of_rank[] = {1, 3, 0, 2};
@@ -219,7 +261,7 @@ TEST(IsmRecognizer, BestCountCapsTheResults) {
   ASSERT_EQ(all.size(), 4u);
   for (int rank = 0; rank < 4; ++rank) {
     const int copy = copy_of_rank[rank];
-    const double relative_shift = shifts[copy] / 0.1;
+    const double relative_shift = shifts[copy] / kRadius;
     EXPECT_NEAR(all[rank].objective, 3.0 - relative_shift * relative_shift, 1e-9) << rank;
     EXPECT_EQ(all[rank].matches[kR].input, 3 * copy);
   }
@@ -246,10 +288,21 @@ TEST(IsmRecognizer, ResultsUsingOnlyEstimatesOfABetterResultAreDropped) {
   EXPECT_NEAR(root[0].objective, 3.0, 1e-9);
   EXPECT_EQ(root[0].estimates, (std::vector<int>{10, 11, 12}));
 
-  // A sub-ISM passing results up drops it too: it explains nothing the better result does not.
+  // A sub-ISM passing results up drops it too while the better result is perfect: that one fits
+  // every estimate fully, no other pose could serve a parent better.
   const auto sub = recognizeIsm(ism, inputs, {}, IsmResultSelection{4});
   ASSERT_EQ(sub.size(), 1u);
   EXPECT_EQ(sub[0].estimates, (std::vector<int>{10, 11, 12}));
+
+  // With B 3 cm off, the better result is no longer perfect, and the sub-ISM passes the lone
+  // result up as well: at another pose it is another placeholder for the parent. The root still
+  // drops it.
+  inputs[kB].pose = movedBy(inputs[kB].pose, Eigen::Vector3d(0.03, 0.0, 0.0));
+  const auto imperfect = recognizeIsm(ism, inputs, {}, IsmResultSelection{4});
+  ASSERT_EQ(imperfect.size(), 2u);
+  EXPECT_EQ(imperfect[0].estimates, (std::vector<int>{10, 11, 12}));
+  EXPECT_EQ(imperfect[1].estimates, (std::vector<int>{11}));
+  EXPECT_EQ(recognizeIsm(ism, inputs, {}, IsmResultSelection{0}).size(), 1u);
 }
 
 TEST(IsmRecognizer, EarlierFoundResultIsDroppedWhenABetterOneUsesAllItsEstimates) {
@@ -272,10 +325,10 @@ TEST(IsmRecognizer, EarlierFoundResultIsDroppedWhenABetterOneUsesAllItsEstimates
   EXPECT_NEAR(root[0].objective, 3.0, 1e-9);
   EXPECT_EQ(root[0].estimates, (std::vector<int>{10, 11, 12}));
 
-  // A sub-ISM drops them as well, so they cannot take places under its cap that a distinct
-  // hypothesis needs: a second copy of the scene 4 m away, with A and B 6 cm off to opposite
-  // sides (best at R: 1 + 0.64 + 0.64 = 2.28), is the second result although both lone results
-  // score higher.
+  // A sub-ISM drops them as well (the scene's result is perfect), so they cannot take places under
+  // its cap that a distinct hypothesis needs: a second copy of the scene 4 m away, with A and B
+  // 6 cm off to opposite sides (best at R: 1 + 2 x (1 - 0.06^2 / r^2) = 1.04), is the second
+  // result although both lone results score higher.
   const Pose second_reference = movedBy(kScene, Eigen::Vector3d(4.0, 0.0, 0.0));
   auto second_copy = perfectInputs(ism, second_reference);
   second_copy.resize(3);
@@ -291,7 +344,7 @@ TEST(IsmRecognizer, EarlierFoundResultIsDroppedWhenABetterOneUsesAllItsEstimates
   ASSERT_EQ(sub.size(), 2u);
   EXPECT_NEAR(sub[0].objective, 3.0, 1e-9);
   EXPECT_EQ(sub[0].estimates, (std::vector<int>{10, 11, 12}));
-  EXPECT_NEAR(sub[1].objective, 1.0 + 2.0 * (1.0 - 0.6 * 0.6), 1e-9);
+  EXPECT_NEAR(sub[1].objective, 1.0 + 2.0 * (1.0 - 0.06 * 0.06 / (kRadius * kRadius)), 1e-9);
   EXPECT_EQ(sub[1].estimates, (std::vector<int>{20, 21, 22}));
 }
 
@@ -311,11 +364,11 @@ TEST(IsmRecognizer, VoteExactlyOnABinBorderMatchesAHypothesisInTheNeighbouringBi
   const Eigen::Vector3d centre(0.0625, 0.0625, 0.0625);
   struct Case {
     Eigen::Vector3d a_vote;
-    double compliance;  // 1 - |a_vote - centre|^2 / bin^2
+    double compliance;  // 1 - |a_vote - centre|^2 / r^2, r^2 = 3/4 bin^2
   };
-  const Case cases[] = {{{0.125, 0.0625, 0.0625}, 0.75},  // face neighbour
-                        {{0.125, 0.125, 0.0625}, 0.5},    // edge neighbour
-                        {{0.125, 0.125, 0.125}, 0.25}};   // corner neighbour
+  // (A vote at the corner of the next cell, half a diagonal away, no longer counts.)
+  const Case cases[] = {{{0.125, 0.0625, 0.0625}, 2.0 / 3.0},  // face neighbour
+                        {{0.125, 0.125, 0.0625}, 1.0 / 3.0}};  // edge neighbour
   for (const Case& c : cases) {
     ASSERT_NE(VotingSpace::cellOf(c.a_vote.x(), bin), VotingSpace::cellOf(centre.x(), bin));
     const std::vector<IsmInput> inputs = {
@@ -329,8 +382,8 @@ TEST(IsmRecognizer, VoteExactlyOnABinBorderMatchesAHypothesisInTheNeighbouringBi
     ASSERT_FALSE(results.empty());
     EXPECT_EQ(results[0].reference_pose.position, centre);
     ASSERT_TRUE(results[0].matches[kA].matched()) << c.a_vote.transpose();
-    EXPECT_DOUBLE_EQ(results[0].matches[kA].position_compliance, c.compliance);
-    EXPECT_DOUBLE_EQ(results[0].objective, 2.0 + c.compliance);
+    EXPECT_NEAR(results[0].matches[kA].position_compliance, c.compliance, 1e-12);
+    EXPECT_NEAR(results[0].objective, 2.0 + c.compliance, 1e-12);
   }
 }
 

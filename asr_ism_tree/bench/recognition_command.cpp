@@ -1,12 +1,13 @@
 #include "recognition_command.hpp"
 
-#include <fstream>
 #include <iostream>
 
+#include "asr_common/atomic_file.hpp"
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
 #include "asr_common/input_error.hpp"
 #include "asr_ism_tree/topology_selection/topology_selection.hpp"
+#include "clutter_benchmark.hpp"
 #include "recognition_benchmark.hpp"
 #include "report.hpp"
 #include "synthetic_benchmark.hpp"
@@ -18,31 +19,30 @@ namespace {
 using asr_common::cli::CommandLine;
 using asr_common::cli::UsageError;
 
-void writeJsonFile(const std::string& path, const nlohmann::ordered_json& json) {
-  std::ofstream file(path, std::ios::trunc);
-  file << json.dump(2) << "\n";
-  if (!file.flush())
-    throw asr_common::InputError(path + ": cannot write the synthetic results");
-}
-
 }  // namespace
 
 int runRecognitionCommand(const std::vector<std::string>& arguments) {
   const CommandLine options(arguments, {"recordings", "threads", "synthetic-json"},
-                            {"json", "no-synthetic"});
+                            {"json", "no-synthetic", "no-clutter", "clutter-only"});
   BenchmarkSettings settings;
   settings.threads = static_cast<unsigned>(options.integer("threads", 1, 1, kMaxThreads));
   const bool json = options.flag("json");
   const std::string synthetic_json = options.optional("synthetic-json", "");
   // In JSON mode stdout carries only the scene array, so the synthetic rows need a file.
-  const bool run_synthetic = !options.flag("no-synthetic") && (!json || !synthetic_json.empty());
+  const bool run_synthetic = !options.flag("no-synthetic") && !options.flag("clutter-only") &&
+                             (!json || !synthetic_json.empty());
   std::ostream& progress = std::cerr;
 
+  const bool clutter_only = options.flag("clutter-only");
   std::vector<SceneRow> scene_rows;
+  std::vector<ClutterRow> clutter_rows;
   if (const auto recordings = asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR,
                                                                    "asr_bench", progress)) {
     progress << "kitchen scenes from " << *recordings << "\n";
-    scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
+    if (!clutter_only)
+      scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
+    if (!options.flag("no-clutter"))
+      clutter_rows = benchmarkClutter(*recordings, settings, progress);
   }
 
   std::vector<SyntheticRow> synthetic_rows;
@@ -50,7 +50,8 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
     progress << "synthetic scaling (objects per step count)\n";
     synthetic_rows = benchmarkSyntheticScaling(settings, progress);
     if (!synthetic_json.empty()) {
-      writeJsonFile(synthetic_json, syntheticRowsToJson(synthetic_rows));
+      asr_common::writeFileAtomically(synthetic_json,
+                                      syntheticRowsToJson(synthetic_rows).dump(2) + "\n");
       progress << "synthetic rows written to " << synthetic_json << "\n";
     }
   } else if (json && !options.flag("no-synthetic")) {
@@ -58,10 +59,11 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
                 "to run it)\n";
   }
 
-  const std::vector<TargetCheck> checks = checkTargets(scene_rows, synthetic_rows);
+  const std::vector<asr_common::cli::Target> checks =
+      checkTargets(scene_rows, synthetic_rows, clutter_rows);
   if (json) {
     std::cout << sceneRowsToJson(scene_rows).dump(2) << "\n";
-    printTargets(progress, checks);
+    asr_common::cli::printTargets(progress, checks);
     return 0;
   }
   std::cout << "\n";
@@ -71,11 +73,15 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   } else {
     std::cout << "Kitchen scenes: skipped, recordings folder not found\n\n";
   }
+  if (!clutter_rows.empty()) {
+    printClutterTable(std::cout, clutter_rows);
+    std::cout << "\n";
+  }
   if (!synthetic_rows.empty()) {
     printSyntheticTable(std::cout, synthetic_rows, settings);
     std::cout << "\n";
   }
-  printTargets(std::cout, checks);
+  asr_common::cli::printTargets(std::cout, checks);
   return 0;
 }
 

@@ -12,7 +12,9 @@
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/line_plot.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
+#include "asr_common/cli/targets.hpp"
 #include "asr_common/input_error.hpp"
+#include "asr_ism_tree/cli/topology_selection_options.hpp"
 #include "synthetic_benchmark.hpp"
 #include "topology_benchmark.hpp"
 
@@ -155,6 +157,44 @@ void plotRuntimes(const std::vector<TopologyRuntimePoint>& points, const std::st
   asr_common::cli::drawLinePlot(plot, path);
 }
 
+// Per scene: optimised numFPs no worse than the paper's, optimised avgDur within the budget,
+// complete numFPs 0; and the whole table within its time.
+std::vector<asr_common::cli::Target> topologyTargets(const std::vector<TopologyTableRow>& rows,
+                                                     double seconds) {
+  std::vector<asr_common::cli::Target> targets;
+  for (const TopologyTableRow& row : rows) {
+    const TopologyMeasures& optimised = row.measures[1];
+    if (row.paper) {
+      const double paper_percent = row.paper->false_positives_percent[1];
+      targets.push_back(
+          {row.scene + ": numFPs(optimised) <= the paper's " + format("%.2f", paper_percent) + " %",
+           format("%.2f", 100 * optimised.false_positive_rate) + " %",
+           100 * optimised.false_positive_rate <= paper_percent + 1e-9});
+    }
+    targets.push_back({row.scene + ": avgDur(optimised) <= 2 ms",
+                       format("%.3f", optimised.mean_ms) + " ms",
+                       optimised.mean_ms <= kMaxOptimisedMs});
+    targets.push_back({row.scene + ": numFPs(complete) = 0",
+                       format("%.2f", 100 * row.measures[2].false_positive_rate) + " %",
+                       row.measures[2].false_positive_rate == 0.0});
+  }
+  targets.push_back(
+      {"whole table <= 20 min", format("%.0f", seconds) + " s", seconds <= kMaxTableSeconds});
+  return targets;
+}
+
+// Optimised trees of synthetic scenes, a small search per point: the figure shows how
+// recognition time grows with objects and steps, and 1000-step trees are slow to evaluate many
+// times.
+std::vector<TopologyRuntimePoint> syntheticPoints(const TopologySelectionOptions& selection,
+                                                  std::size_t max_objects, std::ostream& progress) {
+  progress << "optimised trees of synthetic scenes (objects per step count)\n";
+  TopologySelectionOptions synthetic = selection;
+  synthetic.test_count = std::min<std::size_t>(selection.test_count, 60);
+  synthetic.max_evaluations = std::min<std::size_t>(selection.max_evaluations, 16);
+  return benchmarkSyntheticTopologies(synthetic, max_objects, progress);
+}
+
 }  // namespace
 
 int runTopologyCommand(const std::vector<std::string>& arguments) {
@@ -163,20 +203,11 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
       {"out", "scenes", "recordings", "tests", "alpha", "beta", "max-duration-ms",
        "max-evaluations", "seed", "synthetic-max-objects", "threads"},
       {"json", "no-synthetic"});
-  TopologySelectionOptions selection;
-  selection.test_count = static_cast<std::size_t>(options.integer("tests", 600, 1, kMaxTestCount));
-  selection.alpha = options.number("alpha", selection.alpha);
-  selection.beta = options.number("beta", selection.beta);
   // The search is told the deployment budget the table checks, as a user of RTS would tell it,
   // less 10 % for timing noise: the chosen tree is timed again against the budget, but its time
   // on a loaded machine can still come out higher in the table.
-  selection.max_duration_ms = options.number("max-duration-ms", 0.9 * kMaxOptimisedMs);
-  if (!(selection.max_duration_ms >= 0))
-    throw UsageError{"--max-duration-ms must be >= 0 (0: no budget)"};
-  selection.max_evaluations = static_cast<std::size_t>(options.integer(
-      "max-evaluations", static_cast<long long>(selection.max_evaluations), 2, kMaxEvaluations));
-  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed, 0, kMaxSeed));
-  selection.threads = static_cast<unsigned>(options.integer("threads", 0, 0, kMaxThreads));
+  const TopologySelectionOptions selection =
+      cli::topologySelectionOptionsFrom(options, 0.9 * kMaxOptimisedMs);
   const std::size_t synthetic_max_objects =
       static_cast<std::size_t>(options.integer("synthetic-max-objects", 8, 2, 64));
   const std::string out_dir = options.optional("out", "out/topology");
@@ -192,15 +223,8 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
                                progress);
   }
   std::vector<TopologyRuntimePoint> points;
-  if (!options.flag("no-synthetic")) {
-    progress << "optimised trees of synthetic scenes (objects per step count)\n";
-    // A small search per point: the figure shows how recognition time grows with objects and
-    // steps, and 1000-step trees are slow to evaluate many times.
-    TopologySelectionOptions synthetic = selection;
-    synthetic.test_count = std::min<std::size_t>(selection.test_count, 60);
-    synthetic.max_evaluations = std::min<std::size_t>(selection.max_evaluations, 16);
-    points = benchmarkSyntheticTopologies(synthetic, synthetic_max_objects, progress);
-  }
+  if (!options.flag("no-synthetic"))
+    points = syntheticPoints(selection, synthetic_max_objects, progress);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -215,29 +239,9 @@ int runTopologyCommand(const std::vector<std::string>& arguments) {
     std::cout << markdownTable(rows);
   }
   std::ostream& report = options.flag("json") ? std::cerr : std::cout;
-  report << "\nTargets\n";
-  int met = 0, total = 0;
-  auto target = [&](bool ok, const std::string& text) {
-    ++total;
-    met += ok;
-    report << (ok ? "  met     " : "  MISSED  ") << text << "\n";
-  };
-  for (const TopologyTableRow& row : rows) {
-    if (row.paper) {
-      target(
-          100 * row.measures[1].false_positive_rate <= row.paper->false_positives_percent[1] + 1e-9,
-          row.scene + ": numFPs(optimised) " +
-              format("%.2f", 100 * row.measures[1].false_positive_rate) + " % <= the paper's " +
-              format("%.2f", row.paper->false_positives_percent[1]) + " %");
-    }
-    target(row.measures[1].mean_ms <= kMaxOptimisedMs, row.scene + ": avgDur(optimised) " +
-                                                           format("%.3f", row.measures[1].mean_ms) +
-                                                           " ms <= 2 ms");
-    target(row.measures[2].false_positive_rate == 0.0, row.scene + ": numFPs(complete) = 0");
-  }
-  target(seconds <= kMaxTableSeconds, "whole table " + format("%.0f", seconds) + " s <= 20 min");
-  report << "  " << met << " of " << total << " targets met\n"
-         << "table, CSV" << (points.empty() ? "" : " and plot") << " written to " << out_dir
+  report << "\n";
+  asr_common::cli::printTargets(report, topologyTargets(rows, seconds));
+  report << "table, CSV" << (points.empty() ? "" : " and plot") << " written to " << out_dir
          << "\n";
   return 0;
 }

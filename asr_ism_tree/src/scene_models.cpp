@@ -10,7 +10,8 @@ namespace asr_ism_tree {
 using asr_common::InputError;
 
 SceneModels SceneModels::load(const std::vector<std::string>& model_files,
-                              const std::vector<std::string>& scenes) {
+                              const std::vector<std::string>& scenes,
+                              const TreeRecognitionParameters& parameters) {
   if (model_files.empty())
     throw InputError("no model file given");
   SceneModels loaded;
@@ -28,7 +29,7 @@ SceneModels SceneModels::load(const std::vector<std::string>& model_files,
       }
       Model model;
       model.tree = std::make_unique<IsmTree>(sqlite::loadIsmTree(file, scene));
-      model.recognizer = std::make_unique<TreeRecognizer>(*model.tree);
+      model.recognizer = std::make_unique<TreeRecognizer>(*model.tree, parameters);
       loaded.models_.push_back(std::move(model));
       sources.push_back(file);
     }

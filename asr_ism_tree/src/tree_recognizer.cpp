@@ -1,17 +1,17 @@
 #include "asr_ism_tree/tree_recognizer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <tuple>
 
 #include "asr_common/input_error.hpp"
+#include "asr_ism_tree/estimate_matching.hpp"
 
 namespace asr_ism_tree {
 
 using asr_ism::IsmInput;
 using asr_ism::IsmResult;
-
-namespace {
 
 // The results of one ISM and, per input, where that input came from: the index of the estimate
 // in the configuration for a real object, the index of the child ISM's result for a placeholder.
@@ -19,6 +19,8 @@ struct EvaluatedIsm {
   std::vector<IsmResult> results;
   std::vector<int> input_origin;
 };
+
+namespace {
 
 // One leaf of the tree as it takes part in an assembled instance.
 struct LeafOutcome {
@@ -79,6 +81,9 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
   if (parameters_.results_passed_up == 0) {
     throw asr_common::InputError("tree recognition: results_passed_up must be at least 1");
   }
+  if (parameters_.max_estimates == 0 || parameters_.max_labellings == 0) {
+    throw asr_common::InputError("tree recognition: max_estimates and max_labellings must be >= 1");
+  }
   levels_.resize(tree_.height());
   for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
     levels_[levels_.size() - 1 - tree_.level[ism]].push_back(static_cast<int>(ism));
@@ -94,9 +99,9 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
   }
 }
 
-std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configuration& configuration,
-                                                     TreeRecognitionStats* stats) const {
-  // Validate, then visit estimates in a canonical order so the input order cannot matter.
+namespace {
+
+std::vector<Pose> validatedPoses(const asr_common::Configuration& configuration) {
   std::vector<Pose> poses;
   poses.reserve(configuration.size());
   for (std::size_t i = 0; i < configuration.size(); ++i) {
@@ -105,6 +110,12 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
         estimate.pose.position, estimate.pose.orientation,
         "object estimate " + std::to_string(i) + " (" + estimate.key.toString() + ")"));
   }
+  return poses;
+}
+
+// The estimates in a canonical order (by key, then pose), so the input order cannot matter.
+std::vector<int> canonicalOrder(const asr_common::Configuration& configuration,
+                                const std::vector<Pose>& poses) {
   std::vector<int> canonical(configuration.size());
   std::iota(canonical.begin(), canonical.end(), 0);
   const auto sort_key = [&](int i) {
@@ -115,13 +126,35 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
   };
   std::sort(canonical.begin(), canonical.end(),
             [&](int a, int b) { return sort_key(a) < sort_key(b); });
-  std::vector<std::vector<int>> estimates_of_object(tree_.objects().size());
-  for (int i : canonical) {
-    const int object = tree_.topology.indexOf(configuration[i].key);
-    if (object >= 0)
-      estimates_of_object[object].push_back(i);
-  }
+  return canonical;
+}
 
+// The mean over the scene's objects of their similarity; missing objects count 0.
+double objectConfidence(const SceneInstance& instance, std::size_t object_count) {
+  double sum = 0.0;
+  for (const InstanceObject& object : instance.objects)
+    sum += object.similarity;
+  return object_count == 0 ? 0.0 : std::min(1.0, sum / static_cast<double>(object_count));
+}
+
+// Two instances from different labellings of id-less estimates that match every object to the
+// same estimate equally well are one instance.
+bool sameInstance(const SceneInstance& a, const SceneInstance& b) {
+  if (std::abs(a.confidence - b.confidence) > 1e-12 || a.objects.size() != b.objects.size())
+    return false;
+  for (std::size_t o = 0; o < a.objects.size(); ++o) {
+    if (a.objects[o].key != b.objects[o].key || a.objects[o].estimate != b.objects[o].estimate ||
+        std::abs(a.objects[o].similarity - b.objects[o].similarity) > 1e-12)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<EvaluatedIsm> TreeRecognizer::evaluateIsms(
+    const std::vector<Pose>& poses, const std::vector<std::vector<int>>& estimates_of_object,
+    TreeRecognitionStats* stats) const {
   // Bottom-up evaluation (Algo. 2), level by level; the ISMs of one level are independent.
   std::vector<EvaluatedIsm> evaluated(tree_.isms.size());
   std::vector<asr_ism::IsmRecognitionStats> ism_stats(tree_.isms.size());
@@ -158,70 +191,113 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
     }
   }
   if (stats != nullptr) {
-    *stats = TreeRecognitionStats{};
     for (const auto& s : ism_stats) {
       stats->isms.votes += s.votes;
       stats->isms.bins += s.bins;
       stats->isms.candidates += s.candidates;
       stats->isms.comparisons += s.comparisons;
     }
-    stats->root_results = evaluated[0].results.size();
+    stats->root_results += evaluated[0].results.size();
   }
+  return evaluated;
+}
 
-  // Top-down assembly (Algo. 3 and 4) of every root result.
-  const InstanceAssembler assembler(tree_, evaluated);
-  const double leaf_count = static_cast<double>(leaves_.size());
+SceneInstance TreeRecognizer::assembleInstance(
+    const std::vector<EvaluatedIsm>& evaluated, std::size_t root_result,
+    const std::vector<Pose>& poses,
+    const std::vector<std::vector<int>>& estimates_of_object) const {
+  // Top-down assembly (Algo. 3 and 4) of one root result.
+  std::vector<LeafOutcome> leaves;
+  SceneInstance instance;
+  instance.scene = tree_.scene;
+  instance.isms.resize(tree_.isms.size());
+  for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism)
+    instance.isms[ism].name = tree_.isms[ism].name;
+  InstanceAssembler(tree_, evaluated)
+      .collect(0, static_cast<int>(root_result), 1.0, leaves, instance.isms);
+  const IsmResult& root = evaluated[0].results[root_result];
+  instance.pose = root.reference_pose;
+  instance.confidence = std::min(1.0, root.objective / static_cast<double>(leaves_.size()));
+  for (std::size_t object = 0; object < tree_.objects().size(); ++object) {
+    InstanceObject entry;
+    entry.key = tree_.objects()[object];
+    double best_contribution = -1.0;
+    int matched = 0;
+    for (const LeafOutcome& leaf : leaves) {
+      if (leaf.object != static_cast<int>(object))
+        continue;
+      ++entry.appearances;
+      entry.similarity += leaf.contribution;
+      if (leaf.estimate < 0)
+        continue;
+      ++matched;
+      entry.position_compliance += leaf.position_compliance;
+      entry.orientation_compliance += leaf.orientation_compliance;
+      if (leaf.contribution > best_contribution) {
+        best_contribution = leaf.contribution;
+        entry.estimate = leaf.estimate;
+      }
+    }
+    if (entry.estimate < 0) {
+      if (estimates_of_object[object].empty()) {
+        instance.missing.push_back(entry.key);
+        continue;
+      }
+      entry.estimate = estimates_of_object[object].front();
+    }
+    entry.pose = poses[entry.estimate];
+    entry.similarity /= std::max(1, entry.appearances);
+    if (matched > 0) {
+      entry.position_compliance /= matched;
+      entry.orientation_compliance /= matched;
+    }
+    instance.objects.push_back(entry);
+  }
+  instance.object_confidence = objectConfidence(instance, tree_.objects().size());
+  return instance;
+}
+
+std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configuration& configuration,
+                                                     TreeRecognitionStats* stats) const {
+  if (configuration.size() > parameters_.max_estimates) {
+    throw asr_common::InputError("scene '" + tree_.scene +
+                              "': " + std::to_string(configuration.size()) +
+                              " object estimates, more than the configured maximum of " +
+                              std::to_string(parameters_.max_estimates) + " per recognition");
+  }
+  const std::vector<Pose> poses = validatedPoses(configuration);
+  const std::vector<int> canonical = canonicalOrder(configuration, poses);
+  const EstimateMatching matching = matchEstimates(tree_.objects(), configuration);
+  const std::size_t labellings = matching.labellingCount();
+  if (labellings > parameters_.max_labellings) {
+    throw asr_common::InputError(
+        "scene '" + tree_.scene + "': the estimates without a known id could stand for the " +
+        "objects of their types in more than " + std::to_string(parameters_.max_labellings) +
+        " ways; give their ids, or fewer estimates of types the scene has several objects of");
+  }
+  if (stats != nullptr)
+    *stats = TreeRecognitionStats{};
   std::vector<SceneInstance> instances;
-  for (std::size_t r = 0; r < evaluated[0].results.size(); ++r) {
-    std::vector<LeafOutcome> leaves;
-    SceneInstance instance;
-    instance.scene = tree_.scene;
-    instance.isms.resize(tree_.isms.size());
-    for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
-      instance.isms[ism].name = tree_.isms[ism].name;
+  for (std::size_t labelling = 0; labelling < labellings; ++labelling) {
+    const auto estimates_of_object =
+        matching.estimatesOfObjects(labelling, tree_.objects().size(), canonical);
+    const std::vector<EvaluatedIsm> evaluated = evaluateIsms(poses, estimates_of_object, stats);
+    for (std::size_t r = 0; r < evaluated[0].results.size(); ++r) {
+      SceneInstance instance = assembleInstance(evaluated, r, poses, estimates_of_object);
+      instance.ids_ignored = matching.ids_ignored;
+      // One labelling cannot repeat an instance; only across labellings can one reappear.
+      const bool known =
+          labelling > 0 && std::any_of(instances.begin(), instances.end(), [&](const auto& other) {
+            return sameInstance(other, instance);
+          });
+      if (!known)
+        instances.push_back(std::move(instance));
     }
-    assembler.collect(0, static_cast<int>(r), 1.0, leaves, instance.isms);
-    const IsmResult& root = evaluated[0].results[r];
-    instance.pose = root.reference_pose;
-    instance.confidence = std::min(1.0, root.objective / leaf_count);
-
-    for (std::size_t object = 0; object < tree_.objects().size(); ++object) {
-      InstanceObject entry;
-      entry.key = tree_.objects()[object];
-      double best_contribution = -1.0;
-      int matched = 0;
-      for (const LeafOutcome& leaf : leaves) {
-        if (leaf.object != static_cast<int>(object))
-          continue;
-        ++entry.appearances;
-        entry.similarity += leaf.contribution;
-        if (leaf.estimate < 0)
-          continue;
-        ++matched;
-        entry.position_compliance += leaf.position_compliance;
-        entry.orientation_compliance += leaf.orientation_compliance;
-        if (leaf.contribution > best_contribution) {
-          best_contribution = leaf.contribution;
-          entry.estimate = leaf.estimate;
-        }
-      }
-      if (entry.estimate < 0) {
-        if (estimates_of_object[object].empty()) {
-          instance.missing.push_back(entry.key);
-          continue;
-        }
-        entry.estimate = estimates_of_object[object].front();
-      }
-      entry.pose = poses[entry.estimate];
-      entry.similarity /= std::max(1, entry.appearances);
-      if (matched > 0) {
-        entry.position_compliance /= matched;
-        entry.orientation_compliance /= matched;
-      }
-      instance.objects.push_back(entry);
-    }
-    instances.push_back(std::move(instance));
   }
+  // Best first; the root's order (which breaks ties by the model) within one labelling.
+  std::stable_sort(instances.begin(), instances.end(), [](const auto& a, const auto& b) {
+    return a.confidence > b.confidence + 1e-12;
+  });
   return instances;
 }
 

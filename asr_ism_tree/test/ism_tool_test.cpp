@@ -85,8 +85,11 @@ json parseRecognition(const ToolRun& run, const std::string& scene) {
   EXPECT_TRUE(output["instances"].is_array());
   double previous = 2.0;
   for (const json& instance : output["instances"]) {
-    EXPECT_EQ(keysOf(instance), (Keys{"confidence", "pose", "objects", "missing", "isms"}));
+    EXPECT_EQ(keysOf(instance), (Keys{"confidence", "object_confidence", "ids_ignored", "pose",
+                                      "objects", "missing", "isms"}));
     EXPECT_TRUE(instance["confidence"].is_number());
+    EXPECT_TRUE(instance["object_confidence"].is_number());
+    EXPECT_TRUE(instance["ids_ignored"].is_boolean());
     const double confidence = instance["confidence"].get<double>();
     EXPECT_LE(confidence, previous) << "instances are sorted by confidence, best first";
     previous = confidence;
@@ -287,6 +290,21 @@ TEST_F(IsmToolOnRecordings, RecognizeObjectsFilesInYamlAndJson) {
   expectSuccess(text);
   EXPECT_EQ(text.out.rfind("scene 'gedeck': ", 0), 0u) << text.out;
   EXPECT_NE(text.out.find("instance 1: confidence 1.000"), std::string::npos) << text.out;
+
+  // Without ids (as most detectors report, and as the README's example allows) the objects match
+  // by type: the same instance, and the output says the ids were ignored.
+  asr_ism::Configuration types_only = set;
+  for (auto& estimate : types_only)
+    estimate.key.id.clear();
+  const std::string types_file = dir_.file("set5_types.yaml");
+  asr_ism::writeConfigurationFile(types_file, types_only);
+  const json by_type = parseRecognition(recognizeObjects(model, "gedeck", types_file), "gedeck");
+  ASSERT_FALSE(by_type["instances"].empty());
+  EXPECT_EQ(by_type["instances"][0]["confidence"], expected["instances"][0]["confidence"]);
+  EXPECT_EQ(by_type["instances"][0]["object_confidence"],
+            expected["instances"][0]["object_confidence"]);
+  EXPECT_EQ(by_type["instances"][0]["ids_ignored"], true);
+  EXPECT_EQ(expected["instances"][0]["ids_ignored"], false);
 }
 
 TEST_F(IsmToolOnRecordings, ErrorsNameTheInput) {

@@ -96,6 +96,32 @@ TEST_F(SceneRecognizerNodeTest, ServiceRecognisesARecordedConfiguration) {
   EXPECT_EQ(response.instances[0].objects.size(), demonstration_.objectCount());
   EXPECT_EQ(response.rejected_estimates, 0u);
   EXPECT_TRUE(response.message.empty()) << response.message;
+  EXPECT_GE(response.instances[0].object_confidence, 0.99);
+  EXPECT_FALSE(response.instances[0].ids_ignored);
+}
+
+TEST_F(SceneRecognizerNodeTest, EstimatesWithoutIdsMatchByType) {
+  asr_common::Configuration types_only = demonstration_.configuration(7);
+  for (asr_common::ObjectEstimate& estimate : types_only)
+    estimate.key.id.clear();
+  const asr_msgs::RecognizeScenes::Response response = ask(types_only);
+  ASSERT_FALSE(response.instances.empty()) << response.message;
+  EXPECT_GE(response.instances[0].confidence, 0.99);
+  EXPECT_TRUE(response.instances[0].ids_ignored);
+}
+
+TEST_F(SceneRecognizerNodeTest, RequestsLargerThanTheMaximumAreRefusedWithAMessage) {
+  asr_common::Configuration many;
+  while (many.size() <= 1000) {
+    for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(7))
+      many.push_back(estimate);
+  }
+  const asr_msgs::RecognizeScenes::Response response = ask(many);
+  EXPECT_TRUE(response.instances.empty());
+  EXPECT_NE(response.message.find("more than the configured maximum of 1000"), std::string::npos)
+      << response.message;
+  EXPECT_TRUE(launch_->process().running()) << "the scene_recognizer is required by the launch";
+  EXPECT_FALSE(ask(demonstration_.configuration(3)).instances.empty());
 }
 
 TEST_F(SceneRecognizerNodeTest, ClutterOnlyHasNoInstance) {

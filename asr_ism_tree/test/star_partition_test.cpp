@@ -93,75 +93,89 @@ TEST(StarPartition, RootCentreOutOfRangeIsAnError) {
   EXPECT_THROW(partitionIntoStars(golden::chain(), 4), std::out_of_range);
 }
 
+// A random connected topology of `count` objects: a random spanning tree, then random extra
+// relations.
+RelationTopology randomConnectedTopology(int count, std::mt19937& random) {
+  RelationTopology topology(golden::lettered(count));
+  for (int object = 1; object < count; ++object)
+    topology.addRelation(object, std::uniform_int_distribution<int>(0, object - 1)(random));
+  const int extra = std::uniform_int_distribution<int>(0, count * (count - 1) / 2)(random);
+  for (int e = 0; e < extra; ++e) {
+    const int a = std::uniform_int_distribution<int>(0, count - 1)(random);
+    const int b = std::uniform_int_distribution<int>(0, count - 1)(random);
+    if (a != b)
+      topology.addRelation(a, b);
+  }
+  return topology;
+}
+
+// Every relation in exactly one star; stars hold only relations of the topology.
+void expectRelationsCoveredOnce(const RelationTopology& topology, const std::vector<Star>& stars) {
+  std::multiset<std::pair<int, int>> covered;
+  std::set<int> centres;
+  for (const Star& star : stars) {
+    EXPECT_FALSE(star.neighbours.empty());
+    EXPECT_TRUE(std::is_sorted(star.neighbours.begin(), star.neighbours.end()));
+    EXPECT_TRUE(centres.insert(star.center).second) << "centre used twice";
+    for (int n : star.neighbours) {
+      EXPECT_TRUE(topology.hasRelation(star.center, n));
+      covered.insert({std::min(star.center, n), std::max(star.center, n)});
+    }
+  }
+  const auto relations = topology.relations();
+  EXPECT_EQ((std::vector<std::pair<int, int>>(covered.begin(), covered.end())), relations);
+  EXPECT_EQ(covered.size(), relations.size());
+}
+
+// The root: highest degree, lowest index among ties.
+void expectRootStar(const RelationTopology& topology, const std::vector<Star>& stars) {
+  std::size_t best_degree = 0;
+  int root = -1;
+  for (int object = 0; object < static_cast<int>(topology.objectCount()); ++object) {
+    if (topology.degree(object) > best_degree) {
+      best_degree = topology.degree(object);
+      root = object;
+    }
+  }
+  EXPECT_EQ(stars[0].center, root);
+  EXPECT_EQ(stars[0].height, 0);
+  EXPECT_EQ(stars[0].parent, -1);
+}
+
+bool hasNeighbour(const Star& star, int object) {
+  return std::binary_search(star.neighbours.begin(), star.neighbours.end(), object);
+}
+
+// Parent: the first star (extraction order) one height closer that has the centre. Height is the
+// distance from the root star: no star higher up than the parent has the centre.
+void expectParentsAndHeights(const std::vector<Star>& stars) {
+  for (std::size_t j = 1; j < stars.size(); ++j) {
+    int expected_parent = -1;
+    for (std::size_t k = 0; k < stars.size() && expected_parent < 0; ++k) {
+      if (stars[k].height == stars[j].height - 1 && hasNeighbour(stars[k], stars[j].center))
+        expected_parent = static_cast<int>(k);
+    }
+    EXPECT_GE(stars[j].height, 1) << "star " << j;
+    EXPECT_EQ(stars[j].parent, expected_parent) << "star " << j;
+    for (std::size_t k = 0; k < stars.size(); ++k) {
+      if (stars[k].height < stars[j].height - 1) {
+        EXPECT_FALSE(hasNeighbour(stars[k], stars[j].center))
+            << "star " << j << " could hang below star " << k;
+      }
+    }
+  }
+}
+
 // The documented invariants, on many random connected topologies.
 TEST(StarPartition, InvariantsOnRandomConnectedTopologies) {
   std::mt19937 random(20240611);
   for (int trial = 0; trial < 300; ++trial) {
-    const int count = 2 + trial % 9;
-    RelationTopology topology(golden::lettered(count));
-    // A random spanning tree keeps it connected; then random extra relations.
-    for (int object = 1; object < count; ++object)
-      topology.addRelation(object, std::uniform_int_distribution<int>(0, object - 1)(random));
-    const int extra = std::uniform_int_distribution<int>(0, count * (count - 1) / 2)(random);
-    for (int e = 0; e < extra; ++e) {
-      const int a = std::uniform_int_distribution<int>(0, count - 1)(random);
-      const int b = std::uniform_int_distribution<int>(0, count - 1)(random);
-      if (a != b)
-        topology.addRelation(a, b);
-    }
+    const RelationTopology topology = randomConnectedTopology(2 + trial % 9, random);
     const std::vector<Star> stars = partitionIntoStars(topology);
     SCOPED_TRACE("trial " + std::to_string(trial) + ": " + describe(stars));
-
-    // Every relation in exactly one star; stars hold only relations of the topology.
-    std::multiset<std::pair<int, int>> covered;
-    std::set<int> centres;
-    for (const Star& star : stars) {
-      EXPECT_FALSE(star.neighbours.empty());
-      EXPECT_TRUE(std::is_sorted(star.neighbours.begin(), star.neighbours.end()));
-      EXPECT_TRUE(centres.insert(star.center).second) << "centre used twice";
-      for (int n : star.neighbours) {
-        EXPECT_TRUE(topology.hasRelation(star.center, n));
-        covered.insert({std::min(star.center, n), std::max(star.center, n)});
-      }
-    }
-    const auto relations = topology.relations();
-    EXPECT_EQ((std::vector<std::pair<int, int>>(covered.begin(), covered.end())), relations);
-    EXPECT_EQ(covered.size(), relations.size());
-
-    // The root: highest degree, lowest index among ties.
-    std::size_t best_degree = 0;
-    int root = -1;
-    for (int object = 0; object < count; ++object) {
-      if (topology.degree(object) > best_degree) {
-        best_degree = topology.degree(object);
-        root = object;
-      }
-    }
-    EXPECT_EQ(stars[0].center, root);
-    EXPECT_EQ(stars[0].height, 0);
-    EXPECT_EQ(stars[0].parent, -1);
-
-    // Parent: the first star (extraction order) one height closer that has the centre.
-    for (std::size_t j = 1; j < stars.size(); ++j) {
-      int expected_parent = -1;
-      for (std::size_t k = 0; k < stars.size() && expected_parent < 0; ++k) {
-        if (stars[k].height == stars[j].height - 1 &&
-            std::binary_search(stars[k].neighbours.begin(), stars[k].neighbours.end(),
-                               stars[j].center)) {
-          expected_parent = static_cast<int>(k);
-        }
-      }
-      EXPECT_GE(stars[j].height, 1) << "star " << j;
-      EXPECT_EQ(stars[j].parent, expected_parent) << "star " << j;
-      // Height is the distance from the root star: no star one level higher up has the centre.
-      for (std::size_t k = 0; k < stars.size(); ++k) {
-        if (stars[k].height < stars[j].height - 1) {
-          EXPECT_FALSE(std::binary_search(stars[k].neighbours.begin(), stars[k].neighbours.end(),
-                                          stars[j].center))
-              << "star " << j << " could hang below star " << k;
-        }
-      }
-    }
+    expectRelationsCoveredOnce(topology, stars);
+    expectRootStar(topology, stars);
+    expectParentsAndHeights(stars);
   }
 }
 

@@ -4,6 +4,7 @@
 #include "asr_common/cli/command_line.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism_tree/cli/recognition_options.hpp"
+#include "asr_ism_tree/cli/topology_selection_options.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/topology_file.hpp"
 #include "asr_ism_tree/topology_selection/topology_selection.hpp"
@@ -26,6 +27,43 @@ void printMeasures(const char* name, const TopologyMeasures& measures) {
       100.0 * measures.true_positive_rate);
 }
 
+// The search options of the command line: the shared ones, the tree height, the method and the
+// recognition parameters.
+TopologySelectionOptions selectionOptionsFrom(const CommandLine& options) {
+  TopologySelectionOptions selection = cli::topologySelectionOptionsFrom(options, 0.0);
+  selection.parameters = cli::recognitionParametersFrom(options);
+  selection.max_tree_height =
+      static_cast<int>(options.integer("max-height", 0, 0, kMaxTreeHeightOption));
+  const std::string method = options.has("method") ? options.required("method") : "hill-climbing";
+  if (method == "annealing")
+    selection.method = TopologySearchMethod::kSimulatedAnnealing;
+  else if (method != "hill-climbing")
+    throw UsageError{"--method must be hill-climbing or annealing (got '" + method + "')"};
+  if (options.has("tests-in") && options.has("tests-out"))
+    throw UsageError{"--tests-in and --tests-out exclude each other"};
+  return selection;
+}
+
+void printProgress(const TopologySelectionProgress& progress) {
+  std::fprintf(stderr,
+               "\rrelation topology selection: %zu/%zu topologies, cost %.4f, best %.4f, "
+               "%.0f s, about %.0f s left   ",
+               progress.evaluated, progress.max_evaluations, progress.current_cost,
+               progress.best_cost, progress.seconds_elapsed, progress.seconds_left_estimate);
+}
+
+void printResult(const TopologySelectionResult& result, double max_duration_ms) {
+  std::printf("  %zu test configurations: %zu valid, %zu invalid; %zu topologies evaluated\n",
+              result.tests.size(), result.tests.valid.size(), result.tests.invalid.size(),
+              result.evaluated);
+  if (result.max_mean_work > 0)
+    std::printf("  time budget %.3f ms per configuration = %.0f comparisons on this machine\n",
+                max_duration_ms, result.max_mean_work);
+  printMeasures("star", result.star_measures);
+  printMeasures("optimised", result.measures);
+  printMeasures("complete", result.complete_measures);
+}
+
 }  // namespace
 
 int runSelectTopology(const std::vector<std::string>& arguments) {
@@ -39,30 +77,7 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   const std::string scene = options.required("scene");
   const std::string topology_out = options.required("topology-out");
   const std::string model_path = options.required("model");
-  TopologySelectionOptions selection;
-  selection.parameters = cli::recognitionParametersFrom(options);
-  selection.test_count = static_cast<std::size_t>(
-      options.integer("tests", static_cast<long long>(selection.test_count), 1, kMaxTestCount));
-  selection.seed = static_cast<std::uint32_t>(options.integer("seed", selection.seed, 0, kMaxSeed));
-  selection.alpha = options.number("alpha", selection.alpha);
-  selection.beta = options.number("beta", selection.beta);
-  if (!(selection.alpha >= 0 && selection.beta >= 0 && selection.alpha + selection.beta > 0))
-    throw UsageError{"--alpha and --beta must be >= 0 and not both 0"};
-  selection.max_duration_ms = options.number("max-duration-ms", 0.0);
-  if (!(selection.max_duration_ms >= 0))
-    throw UsageError{"--max-duration-ms must be >= 0 (0: no budget)"};
-  selection.max_tree_height =
-      static_cast<int>(options.integer("max-height", 0, 0, kMaxTreeHeightOption));
-  selection.max_evaluations = static_cast<std::size_t>(options.integer(
-      "max-evaluations", static_cast<long long>(selection.max_evaluations), 2, kMaxEvaluations));
-  selection.threads = static_cast<unsigned>(options.integer("threads", 0, 0, kMaxThreads));
-  const std::string method = options.has("method") ? options.required("method") : "hill-climbing";
-  if (method == "annealing")
-    selection.method = TopologySearchMethod::kSimulatedAnnealing;
-  else if (method != "hill-climbing")
-    throw UsageError{"--method must be hill-climbing or annealing (got '" + method + "')"};
-  if (options.has("tests-in") && options.has("tests-out"))
-    throw UsageError{"--tests-in and --tests-out exclude each other"};
+  TopologySelectionOptions selection = selectionOptionsFrom(options);
 
   const asr_ism::Demonstration demonstration = asr_ism::sqlite::readDemonstration(demo_path, scene);
   RelationTopology start;
@@ -73,17 +88,8 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
   TestConfigurations stored_tests;
   if (options.has("tests-in"))
     stored_tests = readTestConfigurations(options.required("tests-in"), scene);
-
   const TopologySelectionResult result = selectTopology(
-      demonstration, selection,
-      [](const TopologySelectionProgress& progress) {
-        std::fprintf(stderr,
-                     "\rrelation topology selection: %zu/%zu topologies, cost %.4f, best %.4f, "
-                     "%.0f s, about %.0f s left   ",
-                     progress.evaluated, progress.max_evaluations, progress.current_cost,
-                     progress.best_cost, progress.seconds_elapsed, progress.seconds_left_estimate);
-      },
-      options.has("tests-in") ? &stored_tests : nullptr);
+      demonstration, selection, printProgress, options.has("tests-in") ? &stored_tests : nullptr);
   std::fprintf(stderr, "\n");
   if (options.has("tests-out"))
     writeTestConfigurations(options.required("tests-out"), result.tests, demonstration.objects());
@@ -98,15 +104,7 @@ int runSelectTopology(const std::vector<std::string>& arguments) {
 
   std::printf("selected a relation topology for scene '%s' from %s\n", scene.c_str(),
               demo_path.c_str());
-  std::printf("  %zu test configurations: %zu valid, %zu invalid; %zu topologies evaluated\n",
-              result.tests.size(), result.tests.valid.size(), result.tests.invalid.size(),
-              result.evaluated);
-  if (result.max_mean_work > 0)
-    std::printf("  time budget %.3f ms per configuration = %.0f comparisons on this machine\n",
-                selection.max_duration_ms, result.max_mean_work);
-  printMeasures("star", result.star_measures);
-  printMeasures("optimised", result.measures);
-  printMeasures("complete", result.complete_measures);
+  printResult(result, selection.max_duration_ms);
   std::printf("  topology written to %s, tree (%zu ISMs) stored in %s\n", topology_out.c_str(),
               tree.isms.size(), model_path.c_str());
   return 0;

@@ -1,6 +1,6 @@
 // `asr_prediction_bench [prediction] [options]` (`asr bench prediction`): how fast and how
 // accurately the objects of a scene are predicted.
-#include "asr_common/cli/single_command_main.hpp"
+#include "asr_common/cli/command_main.hpp"
 #include "prediction_command.hpp"
 
 namespace {

@@ -35,6 +35,72 @@ PredictionBenchmarkSettings settingsFrom(const CommandLine& options) {
   return settings;
 }
 
+// What one run measured.
+struct Measured {
+  bool have_recordings = false;
+  std::vector<RuntimeRow> kitchen_rows;
+  std::vector<AccuracyRow> accuracy_rows;
+  std::vector<RuntimeRow> synthetic_rows;
+  std::vector<AccuracyRow> combined;  // accuracy over all scenes, per topology and held-out
+};
+
+Measured measure(const CommandLine& options, const PredictionBenchmarkSettings& settings,
+                 std::ostream& progress) {
+  Measured measured;
+  const std::optional<std::string> recordings = asr_common::cli::benchmarkRecordings(
+      options, ASR_RECORDINGS_DIR, "asr_prediction_bench", progress);
+  measured.have_recordings = recordings.has_value();
+  if (recordings) {
+    progress << "kitchen scenes from " << *recordings << ": runtime\n";
+    measured.kitchen_rows = benchmarkKitchenRuntime(*recordings, settings, progress);
+    if (!options.flag("no-accuracy")) {
+      progress << "kitchen scenes: leave-one-out accuracy\n";
+      measured.accuracy_rows = benchmarkKitchenAccuracy(*recordings, settings, progress);
+    }
+  }
+  if (!options.flag("no-synthetic")) {
+    progress << "synthetic scenes: runtime (objects per step count)\n";
+    measured.synthetic_rows = benchmarkSyntheticRuntime(settings, progress);
+  }
+  if (!measured.accuracy_rows.empty()) {
+    for (bool held_out : {false, true}) {
+      for (const char* topology : {"star", "complete"})
+        measured.combined.push_back(combinedAccuracy(measured.accuracy_rows, topology, held_out));
+    }
+  }
+  return measured;
+}
+
+void printJson(const Measured& measured, const std::vector<asr_common::cli::Target>& targets) {
+  nlohmann::ordered_json json;
+  json["kitchen_runtime"] = runtimeRowsToJson(measured.kitchen_rows);
+  json["synthetic_runtime"] = runtimeRowsToJson(measured.synthetic_rows);
+  json["accuracy"] = accuracyRowsToJson(measured.accuracy_rows);
+  json["accuracy_overall"] = accuracyRowsToJson(measured.combined);
+  json["targets"] = targetsToJson(targets);
+  std::cout << json.dump(2) << "\n";
+}
+
+void printTables(const Measured& measured, const PredictionBenchmarkSettings& settings,
+                 const std::vector<asr_common::cli::Target>& targets) {
+  std::cout << "\n";
+  if (measured.have_recordings) {
+    printKitchenRuntimeTable(std::cout, measured.kitchen_rows, settings);
+    std::cout << "\n";
+  } else {
+    std::cout << "Kitchen scenes: skipped, recordings folder not found\n\n";
+  }
+  if (!measured.synthetic_rows.empty()) {
+    printSyntheticRuntimeTable(std::cout, measured.synthetic_rows, settings);
+    std::cout << "\n";
+  }
+  if (!measured.accuracy_rows.empty()) {
+    printAccuracyTable(std::cout, measured.accuracy_rows, measured.combined, settings);
+    std::cout << "\n";
+  }
+  asr_common::cli::printTargets(std::cout, targets);
+}
+
 }  // namespace
 
 int runPredictionBenchmark(const std::vector<std::string>& arguments) {
@@ -47,61 +113,15 @@ int runPredictionBenchmark(const std::vector<std::string>& arguments) {
     throw UsageError{"--plot draws the synthetic runtimes, which --no-synthetic leaves out"};
   std::ostream& progress = std::cerr;
 
-  std::vector<RuntimeRow> kitchen_rows;
-  std::vector<AccuracyRow> accuracy_rows;
-  const std::optional<std::string> recordings = asr_common::cli::benchmarkRecordings(
-      options, ASR_RECORDINGS_DIR, "asr_prediction_bench", progress);
-  const bool have_recordings = recordings.has_value();
-  if (have_recordings) {
-    progress << "kitchen scenes from " << *recordings << ": runtime\n";
-    kitchen_rows = benchmarkKitchenRuntime(*recordings, settings, progress);
-    if (!options.flag("no-accuracy")) {
-      progress << "kitchen scenes: leave-one-out accuracy\n";
-      accuracy_rows = benchmarkKitchenAccuracy(*recordings, settings, progress);
-    }
-  }
-  std::vector<RuntimeRow> synthetic_rows;
-  if (!options.flag("no-synthetic")) {
-    progress << "synthetic scenes: runtime (objects per step count)\n";
-    synthetic_rows = benchmarkSyntheticRuntime(settings, progress);
-  }
-  std::vector<AccuracyRow> combined;
-  if (!accuracy_rows.empty()) {
-    for (bool held_out : {false, true}) {
-      for (const char* topology : {"star", "complete"})
-        combined.push_back(combinedAccuracy(accuracy_rows, topology, held_out));
-    }
-  }
-  const std::vector<PredictionTarget> targets = checkPredictionTargets(synthetic_rows, combined);
-
-  if (options.flag("json")) {
-    nlohmann::ordered_json json;
-    json["kitchen_runtime"] = runtimeRowsToJson(kitchen_rows);
-    json["synthetic_runtime"] = runtimeRowsToJson(synthetic_rows);
-    json["accuracy"] = accuracyRowsToJson(accuracy_rows);
-    json["accuracy_overall"] = accuracyRowsToJson(combined);
-    json["targets"] = targetsToJson(targets);
-    std::cout << json.dump(2) << "\n";
-  } else {
-    std::cout << "\n";
-    if (have_recordings) {
-      printKitchenRuntimeTable(std::cout, kitchen_rows, settings);
-      std::cout << "\n";
-    } else {
-      std::cout << "Kitchen scenes: skipped, recordings folder not found\n\n";
-    }
-    if (!synthetic_rows.empty()) {
-      printSyntheticRuntimeTable(std::cout, synthetic_rows, settings);
-      std::cout << "\n";
-    }
-    if (!accuracy_rows.empty()) {
-      printAccuracyTable(std::cout, accuracy_rows, combined, settings);
-      std::cout << "\n";
-    }
-    printPredictionTargets(std::cout, targets);
-  }
+  const Measured measured = measure(options, settings, progress);
+  const std::vector<asr_common::cli::Target> targets =
+      checkPredictionTargets(measured.synthetic_rows, measured.combined);
+  if (options.flag("json"))
+    printJson(measured, targets);
+  else
+    printTables(measured, settings, targets);
   if (options.has("plot")) {
-    plotSyntheticRuntime(synthetic_rows, options.required("plot"));
+    plotSyntheticRuntime(measured.synthetic_rows, options.required("plot"));
     progress << "runtime plot written to " << options.required("plot") << "\n";
   }
   return 0;

@@ -19,9 +19,9 @@ std::string withUnit(double number, const char* pattern) {
 
 }  // namespace
 
-std::vector<PredictionTarget> checkPredictionTargets(const std::vector<RuntimeRow>& synthetic,
-                                                     const std::vector<AccuracyRow>& combined) {
-  std::vector<PredictionTarget> targets;
+std::vector<asr_common::cli::Target> checkPredictionTargets(
+    const std::vector<RuntimeRow>& synthetic, const std::vector<AccuracyRow>& combined) {
+  std::vector<asr_common::cli::Target> targets;
   for (const RuntimeRow& row : synthetic) {
     if (row.objects != 10 || row.steps != 400)
       continue;
@@ -52,24 +52,9 @@ std::vector<PredictionTarget> checkPredictionTargets(const std::vector<RuntimeRo
   return targets;
 }
 
-void printPredictionTargets(std::ostream& out, const std::vector<PredictionTarget>& targets) {
-  if (targets.empty()) {
-    out << "Targets: none checked (nothing was measured)\n";
-    return;
-  }
-  std::size_t met = 0;
-  out << "Targets\n";
-  for (const PredictionTarget& target : targets) {
-    met += target.met ? 1 : 0;
-    out << "  " << (target.met ? "met   " : "MISSED") << "  " << target.target << ": "
-        << target.measured << "\n";
-  }
-  out << "  " << met << " of " << targets.size() << " targets met\n";
-}
-
-nlohmann::ordered_json targetsToJson(const std::vector<PredictionTarget>& targets) {
+nlohmann::ordered_json targetsToJson(const std::vector<asr_common::cli::Target>& targets) {
   nlohmann::ordered_json array = nlohmann::ordered_json::array();
-  for (const PredictionTarget& target : targets)
+  for (const asr_common::cli::Target& target : targets)
     array.push_back(
         {{"target", target.target}, {"measured", target.measured}, {"met", target.met}});
   return array;

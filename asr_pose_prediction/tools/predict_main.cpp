@@ -1,6 +1,6 @@
 // `asr ism predict ...` (the executable ism_predict): recognise a scene, predict its missing
 // objects.
-#include "asr_common/cli/single_command_main.hpp"
+#include "asr_common/cli/command_main.hpp"
 #include "predict_command.hpp"
 
 namespace {

@@ -30,6 +30,37 @@ std::string oneLine(const std::string& message) {
   return line;
 }
 
+namespace {
+
+// Runs `command`, turning its exceptions into one line after `name` and an exit code: 2 and the
+// usage for a UsageError, 1 for bad input or anything else.
+int runGuarded(const std::string& name, const std::string& usage, Command command,
+               const std::vector<std::string>& arguments) {
+  try {
+    return command(arguments);
+  } catch (const UsageError& error) {
+    std::cerr << name << oneLine(error.message) << "\n" << usage;
+    return 2;
+  } catch (const InputError& error) {
+    std::cerr << name << "error: " << oneLine(error.what()) << "\n";
+    return 1;
+  } catch (const std::exception& error) {
+    // Not expected (the core reports bad input as InputError), but still one line, not an abort.
+    std::cerr << name << "internal error: " << oneLine(error.what()) << "\n";
+    return 1;
+  }
+}
+
+bool asksForHelp(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 int runCommandMain(const std::string& program, const std::string& usage,
                    const std::map<std::string, Command>& commands, int argc, char** argv) {
   if (argc < 2) {
@@ -46,26 +77,32 @@ int runCommandMain(const std::string& program, const std::string& usage,
     return 2;
   }
   // `program command --help` is a question, not a misspelt option: the usage, exit code 0.
-  for (int i = 2; i < argc; ++i) {
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::cout << usage;
-      return 0;
-    }
+  if (asksForHelp(argc, argv)) {
+    std::cout << usage;
+    return 0;
   }
-  const std::string name = program + " " + argv[1] + ": ";
-  try {
-    return command->second(std::vector<std::string>(argv + 2, argv + argc));
-  } catch (const UsageError& error) {
-    std::cerr << name << oneLine(error.message) << "\n" << usage;
-    return 2;
-  } catch (const InputError& error) {
-    std::cerr << name << "error: " << oneLine(error.what()) << "\n";
-    return 1;
-  } catch (const std::exception& error) {
-    // Not expected (the core reports bad input as InputError), but still one line, not an abort.
-    std::cerr << name << "internal error: " << oneLine(error.what()) << "\n";
-    return 1;
+  return runGuarded(program + " " + argv[1] + ": ", usage, command->second,
+                    std::vector<std::string>(argv + 2, argv + argc));
+}
+
+int runToolMain(const std::string& program, const std::string& usage, Command run, int argc,
+                char** argv) {
+  if (asksForHelp(argc, argv)) {
+    std::cout << usage;
+    return 0;
   }
+  return runGuarded(program + ": ", usage, run, std::vector<std::string>(argv + 1, argv + argc));
+}
+
+int runSingleCommandMain(const std::string& program, const std::string& command,
+                         const std::string& usage, Command run, int argc, char** argv) {
+  if (asksForHelp(argc, argv)) {
+    std::cout << usage;
+    return 0;
+  }
+  const std::vector<std::string> arguments(argv + (argc > 1 && command == argv[1] ? 2 : 1),
+                                           argv + argc);
+  return runGuarded(program + " " + command + ": ", usage, run, arguments);
 }
 
 }  // namespace asr_common::cli

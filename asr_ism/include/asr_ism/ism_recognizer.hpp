@@ -8,11 +8,16 @@
 namespace asr_ism {
 
 struct IsmRecognitionParameters {
-  /// Edge of the accumulator's cubic bins in metres, and the position deviation at which a
-  /// vote's position compliance reaches 0.
+  /// Edge of the accumulator's cubic bins in metres.
   double bin_size = 0.1;
   /// Orientation deviation in radians at which a vote's orientation compliance reaches 0.
   double max_angle_deviation = 0.5235987755982988;  // 30 degrees
+
+  /// The position deviation at which position compliance reaches 0: half the diagonal of a bin,
+  /// sqrt(3)/2 x bin_size (0.087 m for bins of 0.1 m), the farthest a point of a bin is from its
+  /// centre. It bounds both the vote's distance from the hypothesis and the member's distance
+  /// from where the hypothesis puts it.
+  double supportRadius() const { return 0.8660254037844386 * bin_size; }
 };
 
 /// An estimate given to one ISM: a real object or a child ISM's result, already assigned to the
@@ -54,9 +59,11 @@ struct IsmResult {
 /// Which results of an ISM the caller needs; the search skips bins and hypotheses that cannot
 /// change them, so the answer is the same as with an exhaustive search, only faster.
 struct IsmResultSelection {
-  /// A result is returned only if its estimates are not all used by a better result too (it would
-  /// add nothing the better one does not explain). Of those, 0 (for a root ISM) returns all;
-  /// n > 0 (for a sub-ISM whose results go up the tree) the n best.
+  /// 0 (for a root ISM): every result whose estimates are not all used by a better result too (it
+  /// would add nothing the better one does not explain). n > 0 (for a sub-ISM whose results go up
+  /// the tree): the n best, dropping only results whose estimates a better *perfect* result uses
+  /// (one that matches every input around it, one per member, fully); a result at another pose is
+  /// another placeholder for the parent even if it explains no new estimate.
   std::size_t best_count = 0;
 };
 
@@ -70,9 +77,11 @@ struct IsmRecognitionStats {
 
 /// Recognises the scene an ISM models in its inputs. Every input casts one vote per relative pose
 /// of its member (a hypothesis of the reference pose); votes are binned by position. In each bin,
-/// every vote is tried as the reference pose, and each member contributes its best vote within
-/// `bin_size` and `max_angle_deviation` of it (so only the 27 surrounding bins matter):
-/// similarity = position compliance x orientation compliance. The hypothesis with the highest
+/// every vote is tried as the reference pose, and each member contributes its best vote that
+/// passes the support test: within `supportRadius()` of it, the member carried back through the
+/// vote's relative pose within `supportRadius()` of its input, and within `max_angle_deviation`
+/// (so only the 27 surrounding bins matter): similarity = position compliance x orientation
+/// compliance. The hypothesis with the highest
 /// objective is the bin's result. Of results that match the same inputs to the same members only
 /// the best is kept; `selection` says which of the rest are returned. Results come sorted by
 /// objective, best first. Objectives within 1e-9 of each other count as equal; such ties go to

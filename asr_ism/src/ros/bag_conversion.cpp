@@ -6,6 +6,7 @@
 #include <tf2_msgs/TFMessage.h>
 #include <tf2_ros/buffer.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "asr_ism/common_types.hpp"
@@ -14,22 +15,10 @@
 
 namespace asr_ism::ros_interface {
 
-BagConversion convertBagToDemonstration(const std::string& bag_path, const std::string& topic,
-                                        const std::string& demonstration_path,
-                                        const std::string& scene, const std::string& fixed_frame) {
-  if (!ros::Time::isValid())
-    ros::Time::init();  // a tool without a node: message times come from the bag
-  rosbag::Bag bag;
-  try {
-    bag.open(bag_path, rosbag::bagmode::Read);
-  } catch (const rosbag::BagException& error) {
-    throw InputError(bag_path + ": cannot read the bag: " + error.what());
-  }
+namespace {
 
-  // Every transform of the bag, kept for its whole length.
-  rosbag::View whole(bag);
-  const ros::Duration length = whole.getEndTime() - whole.getBeginTime();
-  tf2_ros::Buffer buffer(length + ros::Duration(3600));
+// Every transform of the bag, kept for its whole length.
+void loadTransforms(rosbag::Bag& bag, tf2_ros::Buffer& buffer) {
   for (const rosbag::MessageInstance& message :
        rosbag::View(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}))) {
     if (const auto transforms = message.instantiate<tf2_msgs::TFMessage>()) {
@@ -38,11 +27,15 @@ BagConversion convertBagToDemonstration(const std::string& bag_path, const std::
         buffer.setTransform(transform, "bag", is_static);
     }
   }
+}
 
-  EstimateIntake intake(buffer, fixed_frame, ros::Duration(0));
-  BagConversion conversion;
+// The accepted estimates of every message on `topic`, one configuration per message that has
+// any, and the objects in order of first appearance; counts in `conversion`.
+std::vector<Configuration> readConfigurations(rosbag::Bag& bag, const std::string& bag_path,
+                                              const std::string& topic, EstimateIntake& intake,
+                                              std::vector<ObjectKey>& objects,
+                                              BagConversion& conversion) {
   std::vector<Configuration> configurations;
-  std::vector<ObjectKey> objects;
   for (const rosbag::MessageInstance& message : rosbag::View(bag, rosbag::TopicQuery(topic))) {
     const auto list = message.instantiate<asr_msgs::ObjectEstimateList>();
     if (!list)
@@ -60,6 +53,31 @@ BagConversion convertBagToDemonstration(const std::string& bag_path, const std::
     if (!configuration.empty())
       configurations.push_back(std::move(configuration));
   }
+  return configurations;
+}
+
+}  // namespace
+
+BagConversion convertBagToDemonstration(const std::string& bag_path, const std::string& topic,
+                                        const std::string& demonstration_path,
+                                        const std::string& scene, const std::string& fixed_frame) {
+  if (!ros::Time::isValid())
+    ros::Time::init();  // a tool without a node: message times come from the bag
+  rosbag::Bag bag;
+  try {
+    bag.open(bag_path, rosbag::bagmode::Read);
+  } catch (const rosbag::BagException& error) {
+    throw InputError(bag_path + ": cannot read the bag: " + error.what());
+  }
+  rosbag::View whole(bag);
+  tf2_ros::Buffer buffer(whole.getEndTime() - whole.getBeginTime() + ros::Duration(3600));
+  loadTransforms(bag, buffer);
+
+  EstimateIntake intake(buffer, fixed_frame, ros::Duration(0));
+  BagConversion conversion;
+  std::vector<ObjectKey> objects;
+  const std::vector<Configuration> configurations =
+      readConfigurations(bag, bag_path, topic, intake, objects, conversion);
   conversion.rejected = intake.rejectedCount();
   conversion.rejected_by_reason = intake.rejectedByReason();
   if (conversion.messages == 0)

@@ -4,10 +4,7 @@
 
 namespace asr_ism::ros_interface {
 
-using asr_common::ros_interface::deleteAllMarker;
-using asr_common::ros_interface::hueColor;
-using asr_common::ros_interface::newMarker;
-using asr_common::ros_interface::pointOf;
+using namespace asr_common::ros_interface;
 
 using visualization_msgs::Marker;
 

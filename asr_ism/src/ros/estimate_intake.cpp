@@ -10,9 +10,7 @@
 
 namespace asr_ism::ros_interface {
 
-using asr_common::ros_interface::describe;
-using asr_common::ros_interface::fromEstimateMessage;
-using asr_common::ros_interface::fromPoseMessage;
+using namespace asr_common::ros_interface;
 
 EstimateIntake::EstimateIntake(const tf2_ros::Buffer& buffer, std::string fixed_frame,
                                ros::Duration transform_timeout)

@@ -4,15 +4,12 @@
 
 #include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
+#include "asr_common/ros/queue_sizes.hpp"
 
 namespace asr_ism::ros_interface {
 
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::fixedFrameParameter;
-using asr_common::ros_interface::guardCallback;
-using asr_common::ros_interface::numberParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::requiredParameter;
+using namespace asr_common::ros_interface;
+
 RecorderNode::RecorderNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
       private_node_(private_node),
@@ -30,10 +27,12 @@ RecorderNode::RecorderNode(ros::NodeHandle node, ros::NodeHandle private_node)
   estimate_timeout_ = numberParameter(private_node_, "estimate_timeout", 2.0, 0.0, 1e9);
   writer_ = std::make_unique<sqlite::DemonstrationWriter>(file);
 
-  recorded_publisher_ = private_node_.advertise<std_msgs::UInt32>("recorded_sets", 1, true);
-  rejected_publisher_ = private_node_.advertise<std_msgs::UInt32>("rejected_estimates", 1, true);
+  recorded_publisher_ =
+      private_node_.advertise<std_msgs::UInt32>("recorded_sets", kLatchedQueue, true);
+  rejected_publisher_ =
+      private_node_.advertise<std_msgs::UInt32>("rejected_estimates", kLatchedQueue, true);
   publishCounters();
-  subscriber_ = node_.subscribe("objects", 1000, &RecorderNode::receive, this);
+  subscriber_ = node_.subscribe("objects", kEveryMessageQueue, &RecorderNode::receive, this);
   service_ = node_.advertiseService("record_configuration", &RecorderNode::recordService, this);
   if (mode_ == "interval")
     timer_ = node_.createTimer(ros::Duration(interval), &RecorderNode::tick, this);

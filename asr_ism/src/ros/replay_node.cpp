@@ -10,17 +10,13 @@
 
 #include "asr_common/ros/node_parameters.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_common/ros/queue_sizes.hpp"
 #include "asr_ism/ros/demonstration_markers.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 
 namespace asr_ism::ros_interface {
 
-using asr_common::ros_interface::fixedFrameParameter;
-using asr_common::ros_interface::numberParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::requiredParameter;
-using asr_common::ros_interface::stringListParameter;
-using asr_common::ros_interface::toEstimateMessage;
+using namespace asr_common::ros_interface;
 
 ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : node_(node) {
   const auto file = requiredParameter<std::string>(private_node, "demonstration_file");
@@ -41,9 +37,9 @@ ReplayNode::ReplayNode(ros::NodeHandle node, ros::NodeHandle private_node) : nod
     bag_ = std::make_unique<rosbag::Bag>(bag, rosbag::bagmode::Write);
   }
   // Large queues: a slow subscriber gets every set rather than the latest only.
-  objects_publisher_ = node_.advertise<asr_msgs::ObjectEstimateList>("objects", 1000);
-  markers_publisher_ =
-      node_.advertise<visualization_msgs::MarkerArray>("demonstration_markers", 1, true);
+  objects_publisher_ = node_.advertise<asr_msgs::ObjectEstimateList>("objects", kEveryMessageQueue);
+  markers_publisher_ = node_.advertise<visualization_msgs::MarkerArray>("demonstration_markers",
+                                                                        kLatchedQueue, true);
   ROS_INFO("replay_demonstration: scene '%s' from %s, %zu sets at %.1f sets/s%s", scene.c_str(),
            file.c_str(), demonstration_.stepCount(), rate_, loop_ ? ", looping" : "");
 }

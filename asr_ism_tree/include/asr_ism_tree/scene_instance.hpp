@@ -35,8 +35,15 @@ struct InstanceIsm {
 /// An instance of a scene category found in a configuration.
 struct SceneInstance {
   std::string scene;
-  /// Root objective / number of leaves of the tree, in [0, 1].
+  /// The paper's confidence: root objective / number of leaves of the tree, in [0, 1]. An object
+  /// counts once per leaf it appears in, so what one object is worth depends on the topology.
   double confidence = 0.0;
+  /// The mean over the scene's objects of their `similarity` (missing objects count 0), in
+  /// [0, 1]: 6 of 8 objects in place give 0.75 whatever the topology.
+  double object_confidence = 0.0;
+  /// True if some estimate was matched by type only: it had no id, or one the model does not
+  /// know for its type (see TreeRecognizer).
+  bool ids_ignored = false;
   /// The root ISM's reference pose.
   Pose pose;
   /// Scene objects present in the input, in the order of the tree's objects.

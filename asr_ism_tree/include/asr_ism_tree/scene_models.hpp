@@ -21,7 +21,8 @@ class SceneModels {
   /// file or scene for a missing file, a file without models, an unknown scene, or a scene stored
   /// in two files. Nothing is kept if anything fails.
   static SceneModels load(const std::vector<std::string>& model_files,
-                          const std::vector<std::string>& scenes = {});
+                          const std::vector<std::string>& scenes = {},
+                          const TreeRecognitionParameters& parameters = {});
 
   std::vector<std::string> scenes() const;
   bool has(const std::string& scene) const;

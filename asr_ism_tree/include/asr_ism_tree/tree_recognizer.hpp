@@ -15,7 +15,16 @@ struct TreeRecognitionParameters {
   /// The cap keeps the combinations in the parent from exploding; results of one ISM that match
   /// the same inputs are merged before the cap, so several distinct hypotheses get through.
   std::size_t results_passed_up = 4;
+  /// Larger configurations are refused with an InputError, so that one request cannot hold a
+  /// caller (a node's service, its continuous output) for long.
+  std::size_t max_estimates = 10000;
+  /// Estimates without a known id are matched by type; where a type has several objects in the
+  /// scene, each assignment of such estimates to objects is recognised and the best instances
+  /// kept. More assignments than this are refused with an InputError.
+  std::size_t max_labellings = 64;
 };
+
+struct EvaluatedIsm;
 
 struct TreeRecognitionStats {
   asr_ism::IsmRecognitionStats isms;  // summed over the tree's ISMs
@@ -37,7 +46,11 @@ class TreeRecognizer {
   explicit TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters parameters = {},
                           asr_ism::ThreadPool* pool = nullptr);
 
-  /// Instances sorted by confidence, best first. Throws InputError for a non-finite pose.
+  /// Instances sorted by confidence, best first. Estimates match scene objects by type and id; an
+  /// estimate without an id, or with an id the scene does not know for its type, may stand for
+  /// any object of its type (the best assignment wins, several estimates of one object count
+  /// once, and every instance says `ids_ignored`). Throws InputError for a non-finite pose and
+  /// for more estimates or assignments than the parameters allow.
   std::vector<SceneInstance> recognize(const asr_common::Configuration& configuration,
                                        TreeRecognitionStats* stats = nullptr) const;
 
@@ -49,6 +62,13 @@ class TreeRecognizer {
     int member;
     int object;  // index in tree.objects()
   };
+
+  std::vector<EvaluatedIsm> evaluateIsms(const std::vector<Pose>& poses,
+                                         const std::vector<std::vector<int>>& estimates_of_object,
+                                         TreeRecognitionStats* stats) const;
+  SceneInstance assembleInstance(const std::vector<EvaluatedIsm>& evaluated,
+                                 std::size_t root_result, const std::vector<Pose>& poses,
+                                 const std::vector<std::vector<int>>& estimates_of_object) const;
 
   const IsmTree& tree_;
   TreeRecognitionParameters parameters_;

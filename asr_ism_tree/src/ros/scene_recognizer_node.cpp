@@ -7,16 +7,13 @@
 #include "asr_common/input_error.hpp"
 #include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
+#include "asr_common/ros/queue_sizes.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_ism_tree/ros/scene_markers.hpp"
 
 namespace asr_ism_tree::ros_interface {
 
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::fixedFrameParameter;
-using asr_common::ros_interface::numberParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::stringListParameter;
+using namespace asr_common::ros_interface;
 
 SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node),
@@ -31,41 +28,52 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
   const double rate = numberParameter(private_node_, "rate", 10.0, 0.001, 1000.0);
   // 0: estimates never expire.
   estimate_timeout_ = numberParameter(private_node_, "estimate_timeout", 5.0, 0.0, 1e9);
-  models_ = SceneModels::load(model_files_, scenes_);
+  // Requests with more estimates are refused with a message.
+  recognition_parameters_.max_estimates =
+      static_cast<std::size_t>(integerParameter(private_node_, "max_estimates", 1000, 1, 1000000));
+  models_ = std::make_shared<const SceneModels>(
+      SceneModels::load(model_files_, scenes_, recognition_parameters_));
 
-  instances_publisher_ = node_.advertise<asr_msgs::SceneInstanceList>("scene_instances", 10);
-  markers_publisher_ = node_.advertise<visualization_msgs::MarkerArray>("scene_markers", 1, true);
-  rejected_publisher_ = private_node_.advertise<std_msgs::UInt32>("rejected_estimates", 1, true);
+  instances_publisher_ =
+      node_.advertise<asr_msgs::SceneInstanceList>("scene_instances", kResultQueue);
+  markers_publisher_ =
+      node_.advertise<visualization_msgs::MarkerArray>("scene_markers", kLatchedQueue, true);
+  rejected_publisher_ =
+      private_node_.advertise<std_msgs::UInt32>("rejected_estimates", kLatchedQueue, true);
   publishRejected();
   recognize_service_ =
       node_.advertiseService("recognize_scenes", &SceneRecognizerNode::recognize, this);
   reload_service_ = node_.advertiseService("reload_model", &SceneRecognizerNode::reload, this);
   if (continuous) {
-    subscriber_ = node_.subscribe("objects", 100, &SceneRecognizerNode::receive, this);
+    subscriber_ = node_.subscribe("objects", kEstimateQueue, &SceneRecognizerNode::receive, this);
     timer_ = node_.createTimer(ros::Duration(1.0 / rate), &SceneRecognizerNode::tick, this);
   }
   std::string loaded;
-  for (const std::string& scene : models_.scenes())
+  for (const std::string& scene : models_->scenes())
     loaded += (loaded.empty() ? "" : ", ") + scene;
-  ROS_INFO("scene_recognizer: %zu scenes loaded (%s), %s", models_.scenes().size(), loaded.c_str(),
+  ROS_INFO("scene_recognizer: %zu scenes loaded (%s), %s", models_->scenes().size(), loaded.c_str(),
            continuous ? "continuous mode" : "service only");
 }
 
 bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,
                                     asr_msgs::RecognizeScenes::Response& response) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const std::size_t rejected_before = intake_.rejectedCount();
   asr_common::Configuration configuration;
-  for (const asr_msgs::ObjectEstimate& estimate : request.objects) {
-    if (auto accepted = intake_.accept(estimate))
-      configuration.push_back(*accepted);
+  std::shared_ptr<const SceneModels> models;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    models = models_;
+    const std::size_t rejected_before = intake_.rejectedCount();
+    for (const asr_msgs::ObjectEstimate& estimate : request.objects) {
+      if (auto accepted = intake_.accept(estimate))
+        configuration.push_back(*accepted);
+    }
+    response.rejected_estimates =
+        static_cast<std::uint32_t>(intake_.rejectedCount() - rejected_before);
+    if (response.rejected_estimates > 0)
+      publishRejected();
   }
-  response.rejected_estimates =
-      static_cast<std::uint32_t>(intake_.rejectedCount() - rejected_before);
-  if (response.rejected_estimates > 0)
-    publishRejected();
   try {
-    const std::vector<SceneInstance> instances = models_.recognize(configuration, request.scenes);
+    const std::vector<SceneInstance> instances = models->recognize(configuration, request.scenes);
     std_msgs::Header header;
     header.stamp = ros::Time::now();
     header.frame_id = intake_.fixedFrame();
@@ -85,7 +93,8 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
   const std::vector<std::string> files =
       request.model_files.empty() ? model_files_ : request.model_files;
   try {
-    SceneModels loaded = SceneModels::load(files, scenes_);
+    auto loaded = std::make_shared<const SceneModels>(
+        SceneModels::load(files, scenes_, recognition_parameters_));
     std::lock_guard<std::mutex> lock(mutex_);
     models_ = std::move(loaded);
     model_files_ = files;
@@ -96,7 +105,7 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
     ROS_WARN("scene_recognizer: reload failed: %s", response.message.c_str());
   }
   std::lock_guard<std::mutex> lock(mutex_);
-  response.scenes = models_.scenes();
+  response.scenes = models_->scenes();
   return true;
 }
 
@@ -123,20 +132,24 @@ void SceneRecognizerNode::tick(const ros::TimerEvent&) {
 }
 
 void SceneRecognizerNode::recognizeLatest() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const asr_common::Configuration configuration =
-      latest_.current(ros::Time::now().toSec(), estimate_timeout_);
+  asr_common::Configuration configuration;
+  std::shared_ptr<const SceneModels> models;
   asr_msgs::SceneInstanceList list;
-  list.header.stamp = newest_stamp_;
-  list.header.frame_id = intake_.fixedFrame();
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    configuration = latest_.current(ros::Time::now().toSec(), estimate_timeout_);
+    models = models_;
+    list.header.stamp = newest_stamp_;
+    list.header.frame_id = intake_.fixedFrame();
+  }
   std::vector<SceneInstance> instances;
   if (!configuration.empty())
-    instances = models_.recognize(configuration);
+    instances = models->recognize(configuration);  // the guard reports what it refuses
   for (const SceneInstance& instance : instances)
     list.instances.push_back(toSceneInstanceMessage(instance, list.header));
   instances_publisher_.publish(list);
   if (markers_publisher_.getNumSubscribers() > 0)
-    markers_publisher_.publish(sceneInstanceMarkers(instances, models_, list.header));
+    markers_publisher_.publish(sceneInstanceMarkers(instances, *models, list.header));
 }
 
 void SceneRecognizerNode::publishRejected() {

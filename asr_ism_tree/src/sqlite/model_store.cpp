@@ -82,41 +82,13 @@ std::string utcTimestamp() {
   return text;
 }
 
-}  // namespace
-
-void saveIsmTree(const std::string& path, const IsmTree& tree, const std::string& source) {
-  tree.validate("model to save");
-  Database db(path, Database::Mode::kReadWriteCreate);
-  checkSchemaVersion(db);
-  Transaction transaction(db);
-  for (const char* statement : kCreateTables)
-    db.execute(statement);
-  Statement version =
-      db.prepare("INSERT OR IGNORE INTO asr_ism_schema (name, version) VALUES (?, ?)");
-  version.bind(1, std::string(kSchemaName)).bind(2, kModelSchemaVersion).execute();
-
-  // Replace a previous model of this scene: its rows in our tables only. The scene keeps its
-  // tree id, so listModelScenes keeps listing scenes in the order they were first stored.
-  std::int64_t tree_id = -1;
+// The scene's row in asr_ism_trees, new or updated; its id. A previous model of the scene loses
+// its rows in our tables only, and keeps its tree id, so listModelScenes keeps listing scenes in
+// the order they were first stored.
+std::int64_t treeRow(Database& db, const IsmTree& tree, const std::string& source) {
   Statement previous = db.prepare("SELECT id FROM asr_ism_trees WHERE scene = ?");
   previous.bind(1, tree.scene);
-  if (previous.step()) {
-    tree_id = previous.columnInt(0);
-    previous.reset();  // finish the read before changing the table it reads
-    for (const char* table : kTreeTables) {
-      Statement remove = db.prepare(std::string("DELETE FROM ") + table + " WHERE tree_id = ?");
-      remove.bind(1, tree_id).execute();
-    }
-    Statement update_tree = db.prepare(
-        "UPDATE asr_ism_trees SET bin_size = ?, max_angle_deviation = ?, source = ?, created = ? "
-        "WHERE id = ?");
-    update_tree.bind(1, tree.parameters.bin_size)
-        .bind(2, tree.parameters.max_angle_deviation)
-        .bind(3, source)
-        .bind(4, utcTimestamp())
-        .bind(5, tree_id)
-        .execute();
-  } else {
+  if (!previous.step()) {
     Statement insert_tree = db.prepare(
         "INSERT INTO asr_ism_trees (scene, bin_size, max_angle_deviation, source, created) "
         "VALUES (?, ?, ?, ?, ?)");
@@ -126,9 +98,27 @@ void saveIsmTree(const std::string& path, const IsmTree& tree, const std::string
         .bind(4, source)
         .bind(5, utcTimestamp())
         .execute();
-    tree_id = db.lastInsertId();
+    return db.lastInsertId();
   }
+  const std::int64_t tree_id = previous.columnInt(0);
+  previous.reset();  // finish the read before changing the table it reads
+  for (const char* table : kTreeTables) {
+    Statement remove = db.prepare(std::string("DELETE FROM ") + table + " WHERE tree_id = ?");
+    remove.bind(1, tree_id).execute();
+  }
+  Statement update_tree = db.prepare(
+      "UPDATE asr_ism_trees SET bin_size = ?, max_angle_deviation = ?, source = ?, created = ? "
+      "WHERE id = ?");
+  update_tree.bind(1, tree.parameters.bin_size)
+      .bind(2, tree.parameters.max_angle_deviation)
+      .bind(3, source)
+      .bind(4, utcTimestamp())
+      .bind(5, tree_id)
+      .execute();
+  return tree_id;
+}
 
+void saveTopology(Database& db, std::int64_t tree_id, const IsmTree& tree) {
   Statement insert_object = db.prepare(
       "INSERT INTO asr_ism_objects (tree_id, position, type, observed_id) VALUES (?, ?, ?, ?)");
   for (std::size_t i = 0; i < tree.objects().size(); ++i) {
@@ -140,9 +130,31 @@ void saveIsmTree(const std::string& path, const IsmTree& tree, const std::string
   }
   Statement insert_relation =
       db.prepare("INSERT INTO asr_ism_relations (tree_id, object_a, object_b) VALUES (?, ?, ?)");
-  for (const auto& [a, b] : tree.topology.relations()) {
+  for (const auto& [a, b] : tree.topology.relations())
     insert_relation.bind(1, tree_id).bind(2, a).bind(3, b).execute();
+}
+
+void saveRelativePoses(Statement& insert_pose, std::int64_t tree_id, std::size_t ism,
+                       std::size_t member_index, const asr_ism::IsmMember& member) {
+  for (std::size_t r = 0; r < member.relative_poses.size(); ++r) {
+    const auto& pose = member.relative_poses[r].reference_in_member;
+    insert_pose.bind(1, tree_id)
+        .bind(2, static_cast<std::int64_t>(ism))
+        .bind(3, static_cast<std::int64_t>(member_index))
+        .bind(4, static_cast<std::int64_t>(r))
+        .bind(5, pose.position.x())
+        .bind(6, pose.position.y())
+        .bind(7, pose.position.z())
+        .bind(8, pose.orientation.w())
+        .bind(9, pose.orientation.x())
+        .bind(10, pose.orientation.y())
+        .bind(11, pose.orientation.z())
+        .bind(12, static_cast<std::int64_t>(member.relative_poses[r].step_count))
+        .execute();
   }
+}
+
+void saveIsms(Database& db, std::int64_t tree_id, const IsmTree& tree) {
   Statement insert_ism = db.prepare(
       "INSERT INTO asr_ism_isms (tree_id, position, name, parent, level, reference_type, "
       "reference_id) VALUES (?, ?, ?, ?, ?, ?, ?)");
@@ -171,24 +183,26 @@ void saveIsmTree(const std::string& path, const IsmTree& tree, const std::string
           .bind(5, member.object.id)
           .bind(6, member.child_ism)
           .execute();
-      for (std::size_t r = 0; r < member.relative_poses.size(); ++r) {
-        const auto& pose = member.relative_poses[r].reference_in_member;
-        insert_pose.bind(1, tree_id)
-            .bind(2, static_cast<std::int64_t>(i))
-            .bind(3, static_cast<std::int64_t>(m))
-            .bind(4, static_cast<std::int64_t>(r))
-            .bind(5, pose.position.x())
-            .bind(6, pose.position.y())
-            .bind(7, pose.position.z())
-            .bind(8, pose.orientation.w())
-            .bind(9, pose.orientation.x())
-            .bind(10, pose.orientation.y())
-            .bind(11, pose.orientation.z())
-            .bind(12, static_cast<std::int64_t>(member.relative_poses[r].step_count))
-            .execute();
-      }
+      saveRelativePoses(insert_pose, tree_id, i, m, member);
     }
   }
+}
+
+}  // namespace
+
+void saveIsmTree(const std::string& path, const IsmTree& tree, const std::string& source) {
+  tree.validate("model to save");
+  Database db(path, Database::Mode::kReadWriteCreate);
+  checkSchemaVersion(db);
+  Transaction transaction(db);
+  for (const char* statement : kCreateTables)
+    db.execute(statement);
+  Statement version =
+      db.prepare("INSERT OR IGNORE INTO asr_ism_schema (name, version) VALUES (?, ?)");
+  version.bind(1, std::string(kSchemaName)).bind(2, kModelSchemaVersion).execute();
+  const std::int64_t tree_id = treeRow(db, tree, source);
+  saveTopology(db, tree_id, tree);
+  saveIsms(db, tree_id, tree);
   transaction.commit();
 }
 

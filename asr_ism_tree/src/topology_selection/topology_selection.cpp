@@ -288,12 +288,8 @@ Candidate anneal(Candidate current, Evaluator& evaluator, const TopologySelectio
   return current;
 }
 
-}  // namespace
-
-TopologySelectionResult selectTopology(
-    const asr_ism::Demonstration& demonstration, const TopologySelectionOptions& options,
-    const std::function<void(const TopologySelectionProgress&)>& progress,
-    const TestConfigurations* given_tests) {
+void checkSelectionInput(const asr_ism::Demonstration& demonstration,
+                         const TopologySelectionOptions& options) {
   demonstration.validate("relation topology selection");
   const std::vector<ObjectKey>& objects = demonstration.objects();
   if (objects.size() < 2)
@@ -311,9 +307,58 @@ TopologySelectionResult selectTopology(
       throw InputError("the start topology's objects differ from those of scene '" +
                        demonstration.scene() + "'");
   }
+}
 
+// Times are taken on this thread, one topology after the other, in the least disturbed of a few
+// passes: the wall-clock times of the parallel search include the other threads' contention,
+// and on a shared machine a single pass varies by a third. Everything else is deterministic.
+// With a given time per comparison (options.ms_per_comparison > 0) nothing is timed: one pass,
+// and the time is the work times that.
+TopologyMeasures fastestMeasures(const asr_ism::Demonstration& demonstration,
+                                 const RelationTopology& topology, const TestConfigurations& tests,
+                                 const TopologySelectionOptions& options) {
+  const bool timed = !(options.ms_per_comparison > 0.0);
+  TopologyMeasures fastest;
+  for (int pass = 0; pass < (timed ? kTimingPasses : 1); ++pass) {
+    const TopologyMeasures measures =
+        evaluateTopology(demonstration, topology, tests, options.parameters, options.threshold);
+    if (pass == 0 || measures.mean_ms < fastest.mean_ms)
+      fastest = measures;
+  }
+  if (!timed)
+    fastest.mean_ms = fastest.mean_work * options.ms_per_comparison;
+  return fastest;
+}
+
+// The work budget a time budget converts to, by the slower time per comparison of the star and
+// the complete tree, so that trees like either keep the budget; 0 (none) without a time budget.
+double workBudget(const TopologySelectionResult& result, double max_duration_ms) {
+  if (max_duration_ms <= 0.0)
+    return 0.0;
+  double ms_per_work = 0.0;
+  for (const TopologyMeasures* measures : {&result.star_measures, &result.complete_measures}) {
+    if (measures->mean_work > 0.0)
+      ms_per_work = std::max(ms_per_work, measures->mean_ms / measures->mean_work);
+  }
+  return ms_per_work > 0.0 ? max_duration_ms / ms_per_work : 0.0;
+}
+
+TopologyCost costOf(const TopologySelectionResult& result,
+                    const TopologySelectionOptions& options) {
+  const std::size_t test_count = result.tests.valid.size() + result.tests.invalid.size();
+  const double valid_share =
+      test_count > 0 ? static_cast<double>(result.tests.valid.size()) / test_count : 0.5;
+  return TopologyCost(result.star_measures, result.complete_measures, options.alpha, options.beta,
+                      result.max_mean_work, valid_share);
+}
+
+// The test configurations, the star and complete topologies' measures (which normalise the cost
+// and convert a time budget into work) and the work budget.
+TopologySelectionResult prepareSelection(const asr_ism::Demonstration& demonstration,
+                                         const TopologySelectionOptions& options,
+                                         const TestConfigurations* given_tests) {
   TopologySelectionResult result;
-  const RelationTopology complete = RelationTopology::complete(objects);
+  const RelationTopology complete = RelationTopology::complete(demonstration.objects());
   if (given_tests) {
     result.tests = *given_tests;
   } else {
@@ -321,138 +366,153 @@ TopologySelectionResult selectTopology(
     result.tests = generateTestConfigurations(demonstration, complete_tree, options.test_count,
                                               options.seed, options.threshold);
   }
+  result.star = RelationTopology::star(demonstration.objects(), chooseStarCenter(demonstration));
+  result.star_measures = fastestMeasures(demonstration, result.star, result.tests, options);
+  result.complete_measures = fastestMeasures(demonstration, complete, result.tests, options);
+  result.max_mean_work = workBudget(result, options.max_duration_ms);
+  return result;
+}
 
-  // Times are taken on this thread, one topology after the other, in the least disturbed of a few
-  // passes: the wall-clock times of the parallel search include the other threads' contention,
-  // and on a shared machine a single pass varies by a third. Everything else is deterministic.
-  const bool timed = !(options.ms_per_comparison > 0.0);
-  auto measure = [&](const RelationTopology& topology) {
-    TopologyMeasures fastest;
-    for (int pass = 0; pass < (timed ? kTimingPasses : 1); ++pass) {
-      const TopologyMeasures measures = evaluateTopology(demonstration, topology, result.tests,
-                                                         options.parameters, options.threshold);
-      if (pass == 0 || measures.mean_ms < fastest.mean_ms)
-        fastest = measures;
-    }
-    if (!timed)
-      fastest.mean_ms = fastest.mean_work * options.ms_per_comparison;
-    return fastest;
-  };
-  Evaluator evaluator(demonstration, result.tests, options, progress);
-  result.star = RelationTopology::star(objects, chooseStarCenter(demonstration));
-  // Their times convert a time budget into work.
-  result.star_measures = measure(result.star);
-  result.complete_measures = measure(complete);
-  evaluator.remember(result.star, result.star_measures);
-  evaluator.remember(complete, result.complete_measures);
-  if (options.max_duration_ms > 0.0) {
-    // The slower time per comparison of the two, so that trees like either keep the budget.
-    double ms_per_work = 0.0;
-    for (const TopologyMeasures* measures : {&result.star_measures, &result.complete_measures}) {
-      if (measures->mean_work > 0.0)
-        ms_per_work = std::max(ms_per_work, measures->mean_ms / measures->mean_work);
-    }
-    result.max_mean_work = ms_per_work > 0.0 ? options.max_duration_ms / ms_per_work : 0.0;
-    evaluator.setWorkBudget(result.max_mean_work);
-  }
-  const std::size_t test_count = result.tests.valid.size() + result.tests.invalid.size();
-  const double valid_share =
-      test_count > 0 ? static_cast<double>(result.tests.valid.size()) / test_count : 0.5;
-  const TopologyCost cost(result.star_measures, result.complete_measures, options.alpha,
-                          options.beta, result.max_mean_work, valid_share);
-  evaluator.setCost(cost);
+struct Starts {
+  Candidate best;       // where the search begins
+  Candidate best_star;  // the cheapest star
+};
 
-  // The start: the given topology, or the best of all stars and the complete topology (which
-  // wins where its work is within the budget and the stars make many errors; the climb then
-  // removes the relations that the errors do not need).
+// The start: the given topology, or the best of all stars and the complete topology (which
+// wins where its work is within the budget and the stars make many errors; the climb then
+// removes the relations that the errors do not need).
+Starts evaluateStarts(const TopologySelectionResult& result,
+                      const TopologySelectionOptions& options, const TopologyCost& cost,
+                      Evaluator& evaluator) {
+  const std::vector<ObjectKey>& objects = result.star.objects();
   std::vector<RelationTopology> starts;
   if (options.start) {
     starts.push_back(*options.start);
   } else {
     for (std::size_t center = 0; center < objects.size(); ++center)
       starts.push_back(RelationTopology::star(objects, center));
-    starts.push_back(complete);
+    starts.push_back(RelationTopology::complete(objects));
   }
-  Candidate best;
-  Candidate best_star = {result.star, cost(result.star_measures)};
-  {
-    const auto results = evaluator.evaluate(starts);
-    for (std::size_t i = 0; i < starts.size(); ++i) {
-      if (!results[i])
-        continue;
-      const Candidate candidate = {starts[i], results[i]->cost};
-      if (candidate.cost < best.cost - 1e-12)
-        best = candidate;
-      if (!options.start && i < objects.size() && candidate.cost < best_star.cost - 1e-12)
-        best_star = candidate;
-    }
-    if (!std::isfinite(best.cost))  // the budget ended before any start: use the star
-      best = best_star;
+  Starts found;
+  found.best_star = {result.star, cost(result.star_measures)};
+  const auto results = evaluator.evaluate(starts);
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    if (!results[i])
+      continue;
+    const Candidate candidate = {starts[i], results[i]->cost};
+    if (candidate.cost < found.best.cost - 1e-12)
+      found.best = candidate;
+    if (!options.start && i < objects.size() && candidate.cost < found.best_star.cost - 1e-12)
+      found.best_star = candidate;
   }
-  const RelationViolations violations(demonstration, result.tests.invalid, options.parameters,
-                                      kBrokenRelationDeficit);
-  // Restarts from the other ends of the search space: the best star grown by the relations that
-  // the invalid configurations break (near the few-false-positive topologies that climbing from a
-  // star rarely reaches), and the complete topology (a climb down from it keeps the relations the
-  // errors need). Either is the start instead if it costs less than the best start.
-  std::vector<RelationTopology> other_starts;
-  if (!options.start) {
-    const RelationTopology grown =
-        withCatchingRelations(best_star.topology, violations, options.max_tree_height);
-    for (const RelationTopology& start : {grown, complete}) {
-      const auto results = evaluator.evaluate({start});
-      if (results[0] && results[0]->cost < best.cost - 1e-12) {
-        other_starts.push_back(best.topology);
-        best = {start, results[0]->cost};
-      } else if (start != best.topology &&
-                 std::find(other_starts.begin(), other_starts.end(), start) == other_starts.end()) {
-        other_starts.push_back(start);
-      }
-    }
-  }
-  evaluator.report(best.cost, best.cost);
+  if (!std::isfinite(found.best.cost))  // the budget ended before any start: use the star
+    found.best = found.best_star;
+  return found;
+}
 
+// Restarts from the other ends of the search space: the best star grown by the relations that
+// the invalid configurations break (near the few-false-positive topologies that climbing from a
+// star rarely reaches), and the complete topology (a climb down from it keeps the relations the
+// errors need). Either is the start instead (in `starts.best`) if it costs less than the best.
+std::vector<RelationTopology> otherStarts(Starts& starts, const RelationViolations& violations,
+                                          const TopologySelectionOptions& options,
+                                          Evaluator& evaluator) {
+  std::vector<RelationTopology> other_starts;
+  if (options.start)
+    return other_starts;
+  Candidate& best = starts.best;
+  const RelationTopology grown =
+      withCatchingRelations(starts.best_star.topology, violations, options.max_tree_height);
+  for (const RelationTopology& start :
+       {grown, RelationTopology::complete(best.topology.objects())}) {
+    const auto results = evaluator.evaluate({start});
+    if (results[0] && results[0]->cost < best.cost - 1e-12) {
+      other_starts.push_back(best.topology);
+      best = {start, results[0]->cost};
+    } else if (start != best.topology &&
+               std::find(other_starts.begin(), other_starts.end(), start) == other_starts.end()) {
+      other_starts.push_back(start);
+    }
+  }
+  return other_starts;
+}
+
+// Annealing from `best`, or hill climbing with restarts: the other ends first, then starts near
+// the best topology so far. `best` is updated along the way.
+void search(Candidate& best, const std::vector<RelationTopology>& other_starts,
+            const RelationViolations& violations, const TopologySelectionOptions& options,
+            Evaluator& evaluator) {
   asr_ism::PortableRandom random(options.seed ^ 0x5eedu);
   const std::size_t batch_size = std::max<std::size_t>(1, options.batch_size);
   if (options.method == TopologySearchMethod::kSimulatedAnnealing) {
     anneal(best, evaluator, options, violations, batch_size, random, best);
-  } else {
-    climb(best, evaluator, options, violations, batch_size, random, best);
-    for (std::size_t restart = 0; restart < options.restarts && evaluator.budgetLeft(); ++restart) {
-      // The other ends first, then starts near the best topology so far.
-      const RelationTopology start =
-          restart < other_starts.size()
-              ? other_starts[restart]
-              : perturbed(best.topology, 2 + restart, options.max_tree_height, random);
-      const auto results = evaluator.evaluate({start});
-      if (!results[0])
-        break;
-      climb({start, results[0]->cost}, evaluator, options, violations, batch_size, random, best);
-    }
+    return;
   }
+  climb(best, evaluator, options, violations, batch_size, random, best);
+  for (std::size_t restart = 0; restart < options.restarts && evaluator.budgetLeft(); ++restart) {
+    const RelationTopology start =
+        restart < other_starts.size()
+            ? other_starts[restart]
+            : perturbed(best.topology, 2 + restart, options.max_tree_height, random);
+    const auto results = evaluator.evaluate({start});
+    if (!results[0])
+      break;
+    climb({start, results[0]->cost}, evaluator, options, violations, batch_size, random, best);
+  }
+}
 
+// The cheapest topology evaluated, measured alone. The work budget was converted by the star's
+// and complete tree's time per comparison, but trees of more, smaller ISMs take up to a quarter
+// longer per comparison. If the chosen tree misses the time budget, the budget is converted
+// again by its own time per comparison and the cheapest topology evaluated within that is
+// chosen instead.
+void chooseWithinTimeBudget(TopologySelectionResult& result,
+                            const asr_ism::Demonstration& demonstration,
+                            const TopologySelectionOptions& options, Evaluator& evaluator) {
   const Evaluated* chosen = evaluator.cheapest();
-  result.measures = measure(chosen->topology);
-  // The work budget was converted by the star's and complete tree's time per comparison, but
-  // trees of more, smaller ISMs take up to a quarter longer per comparison. If the chosen tree,
-  // measured alone, misses the time budget, the budget is converted again by its own time per
-  // comparison and the cheapest topology evaluated within that is chosen instead.
+  result.measures = fastestMeasures(demonstration, chosen->topology, result.tests, options);
   for (int round = 0; round < kBudgetRechecks && options.max_duration_ms > 0.0 &&
                       result.measures.mean_ms > options.max_duration_ms;
        ++round) {
     result.max_mean_work =
         std::min(result.max_mean_work,
                  result.measures.mean_work * options.max_duration_ms / result.measures.mean_ms);
-    evaluator.setCost(TopologyCost(result.star_measures, result.complete_measures, options.alpha,
-                                   options.beta, result.max_mean_work, valid_share));
+    evaluator.setCost(costOf(result, options));
     const Evaluated* within = evaluator.cheapest();
     if (within == chosen)
       break;  // nothing evaluated does better
     chosen = within;
-    result.measures = measure(chosen->topology);
+    result.measures = fastestMeasures(demonstration, chosen->topology, result.tests, options);
   }
   result.topology = chosen->topology;
   result.cost = chosen->cost;
+}
+
+}  // namespace
+
+TopologySelectionResult selectTopology(
+    const asr_ism::Demonstration& demonstration, const TopologySelectionOptions& options,
+    const std::function<void(const TopologySelectionProgress&)>& progress,
+    const TestConfigurations* given_tests) {
+  checkSelectionInput(demonstration, options);
+  TopologySelectionResult result = prepareSelection(demonstration, options, given_tests);
+  Evaluator evaluator(demonstration, result.tests, options, progress);
+  evaluator.remember(result.star, result.star_measures);
+  evaluator.remember(RelationTopology::complete(demonstration.objects()), result.complete_measures);
+  if (options.max_duration_ms > 0.0)
+    evaluator.setWorkBudget(result.max_mean_work);
+  const TopologyCost cost = costOf(result, options);
+  evaluator.setCost(cost);
+
+  Starts starts = evaluateStarts(result, options, cost, evaluator);
+  const RelationViolations violations(demonstration, result.tests.invalid, options.parameters,
+                                      kBrokenRelationDeficit);
+  const std::vector<RelationTopology> other_starts =
+      otherStarts(starts, violations, options, evaluator);
+  evaluator.report(starts.best.cost, starts.best.cost);
+  search(starts.best, other_starts, violations, options, evaluator);
+
+  chooseWithinTimeBudget(result, demonstration, options, evaluator);
   result.evaluated = evaluator.evaluated();
   return result;
 }

@@ -17,6 +17,8 @@ nlohmann::ordered_json poseToJson(const asr_common::Pose& pose) {
 nlohmann::ordered_json instanceToJson(const SceneInstance& instance) {
   nlohmann::ordered_json json;
   json["confidence"] = instance.confidence;
+  json["object_confidence"] = instance.object_confidence;
+  json["ids_ignored"] = instance.ids_ignored;
   json["pose"] = poseToJson(instance.pose);
   json["objects"] = nlohmann::ordered_json::array();
   for (const InstanceObject& object : instance.objects) {
@@ -42,8 +44,11 @@ void printInstances(std::ostream& out, const std::vector<SceneInstance>& instanc
   for (std::size_t i = 0; i < instances.size(); ++i) {
     const SceneInstance& instance = instances[i];
     const auto& p = instance.pose.position;
-    std::snprintf(line, sizeof(line), "instance %zu: confidence %.3f, at (%.3f, %.3f, %.3f)\n",
-                  i + 1, instance.confidence, p.x(), p.y(), p.z());
+    std::snprintf(
+        line, sizeof(line),
+        "instance %zu: confidence %.3f, object confidence %.3f, at (%.3f, %.3f, %.3f)%s\n", i + 1,
+        instance.confidence, instance.object_confidence, p.x(), p.y(), p.z(),
+        instance.ids_ignored ? ", ids ignored (matched by type)" : "");
     out << line;
     for (const InstanceObject& object : instance.objects) {
       std::snprintf(

@@ -5,16 +5,14 @@
 #include "asr_common/input_error.hpp"
 #include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
+#include "asr_common/ros/queue_sizes.hpp"
 #include "asr_ism_tree/ros/scene_instance_message.hpp"
 #include "asr_pose_prediction/ros/pose_cloud_message.hpp"
 #include "asr_pose_prediction/ros/prediction_markers.hpp"
 
 namespace asr_pose_prediction::ros_interface {
 
-using asr_common::ros_interface::checkParameter;
-using asr_common::ros_interface::integerParameter;
-using asr_common::ros_interface::optionalParameter;
-using asr_common::ros_interface::stringListParameter;
+using namespace asr_common::ros_interface;
 
 PosePredictorNode::PosePredictorNode(ros::NodeHandle node, ros::NodeHandle private_node)
     : node_(node) {
@@ -33,10 +31,11 @@ PosePredictorNode::PosePredictorNode(ros::NodeHandle node, ros::NodeHandle priva
   for (const std::string& scene : models_.scenes())
     predictors_.emplace(scene, PosePredictor(models_.tree(scene)));
 
-  clouds_publisher_ = node_.advertise<asr_msgs::PredictedPoseCloud>("predicted_poses", 10);
+  clouds_publisher_ =
+      node_.advertise<asr_msgs::PredictedPoseCloud>("predicted_poses", kResultQueue);
   markers_publisher_ =
-      node_.advertise<visualization_msgs::MarkerArray>("prediction_markers", 1, true);
-  subscriber_ = node_.subscribe("scene_instances", 10, &PosePredictorNode::receive, this);
+      node_.advertise<visualization_msgs::MarkerArray>("prediction_markers", kLatchedQueue, true);
+  subscriber_ = node_.subscribe("scene_instances", kResultQueue, &PosePredictorNode::receive, this);
   service_ = node_.advertiseService("predict_poses", &PosePredictorNode::predictService, this);
   continuous_ = continuous;
   ROS_INFO("pose_predictor: %zu scenes, %d poses per missing object", predictors_.size(), samples);

@@ -17,6 +17,18 @@ using Command = int (*)(const std::vector<std::string>& arguments);
 int runCommandMain(const std::string& program, const std::string& usage,
                    const std::map<std::string, Command>& commands, int argc, char** argv);
 
+/// The main() of a tool without subcommands: `program [options]`, with the exit codes and
+/// one-line messages of runCommandMain (`program: error: ...`); --help or -h prints the usage.
+int runToolMain(const std::string& program, const std::string& usage, Command run, int argc,
+                char** argv);
+
+/// The main() of a tool that is one subcommand of a larger front end (`ism predict`): runs `run`
+/// as the only command of `program`, so errors read "program command: ..." with runCommandMain's
+/// exit codes. The command's name may be given as the first argument or left out (the asr script
+/// leaves it out); --help or -h anywhere prints the usage.
+int runSingleCommandMain(const std::string& program, const std::string& command,
+                         const std::string& usage, Command run, int argc, char** argv);
+
 /// `message` with line breaks and other control characters escaped.
 std::string oneLine(const std::string& message);
 

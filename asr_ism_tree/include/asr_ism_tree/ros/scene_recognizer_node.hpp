@@ -7,6 +7,7 @@
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
 
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -19,9 +20,12 @@ namespace asr_ism_tree::ros_interface {
 
 /// The scene recogniser node. Parameters (private): model_files (list, required), scenes (list;
 /// empty: all), fixed_frame (map), continuous (true), rate (Hz, 10), estimate_timeout (s, 5; 0:
-/// never). Services recognize_scenes and reload_model; in continuous mode the latest estimate of
-/// every object from topic `objects` is recognised at `rate` and published on scene_instances
-/// and scene_markers. Rejected estimates are counted on ~rejected_estimates (latched).
+/// never), max_estimates (1000: larger requests are refused with a message). Services
+/// recognize_scenes and reload_model; in continuous mode the latest estimate of every object from
+/// topic `objects` is recognised at `rate` and published on scene_instances and scene_markers.
+/// Rejected estimates are counted on ~rejected_estimates (latched). Recognition runs outside the
+/// lock on a snapshot of the models, so a service call (on its own thread) never holds up the
+/// timer.
 class SceneRecognizerNode {
  public:
   /// Reads and checks the parameters and loads the models: throws InputError naming the
@@ -47,8 +51,10 @@ class SceneRecognizerNode {
 
   tf2_ros::Buffer buffer_;
   tf2_ros::TransformListener listener_;
-  std::mutex mutex_;  // models_, intake_, latest_ (service and topic callbacks may overlap)
-  SceneModels models_;
+  std::mutex mutex_;  // models_ (the pointer), intake_, latest_
+  // Replaced whole by a reload; a recognition in progress keeps the models it started with.
+  std::shared_ptr<const SceneModels> models_;
+  TreeRecognitionParameters recognition_parameters_;
   asr_ism::ros_interface::EstimateIntake intake_;
   asr_ism::LatestEstimates latest_;
   ros::Time newest_stamp_;

@@ -1,0 +1,305 @@
+// Invariants a robot acting on recognition relies on (issue 12, "Right answers"), checked over the
+// kitchen recordings and office2016 with star, complete and optimised trees and seeded random
+// turns, shifts and removals.
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <map>
+#include <memory>
+#include <random>
+#include <set>
+#include <string>
+
+#include "asr_common/input_error.hpp"
+#include "asr_ism/sqlite/demonstration_reader.hpp"
+#include "asr_common/testing/recordings_skip.hpp"
+#include "asr_common/testing/temp_dir.hpp"
+#include "asr_ism_tree/star_center.hpp"
+#include "asr_ism_tree/topology_file.hpp"
+#include "asr_ism_tree/tree_generation.hpp"
+#include "asr_ism_tree/tree_recognizer.hpp"
+#include "instance_lookup.hpp"
+
+namespace asr_ism_tree {
+namespace {
+
+using asr_common::Configuration;
+using asr_common::Pose;
+using asr_common::testing::recording;
+
+constexpr double kDegree = M_PI / 180.0;
+// How much lower than without it a badly seen object may leave the best instance of a tree with
+// sub-ISMs (the largest shortfall measured over these cases is printed).
+constexpr double kTreeTolerance = 0.05;
+
+struct SceneFile {
+  const char* file;
+  const char* scene;
+  // Relations selected by `select-topology` (docs/topology_table.csv), "" if none is stored.
+  const char* optimised;
+};
+
+const SceneFile kScenes[] = {
+    {"story_1.sqlite", "gedeck",
+     "Cup marker_1\nCup marker_3\nPlateDeep marker_3\nPlateDeep marker_5\nPlateDeep marker_6\n"
+     "marker_1 marker_5\nmarker_2 marker_4\nmarker_4 marker_5\nmarker_5 marker_6\n"},
+    {"story_1.sqlite", "Gedeck_Ende",
+     "Cup marker_4\nCup marker_6\nPlateDeep marker_6\nmarker_1 marker_2\nmarker_1 marker_5\n"
+     "marker_2 marker_4\nmarker_2 marker_6\nmarker_3 marker_5\n"},
+    {"story_1.sqlite", "Gedeck_Schrank_2", ""},
+    {"story_1.sqlite", "Spuelkorb_3", ""},
+    {"story_2.sqlite", "Brot_Gedeck_2", ""},
+    {"story_2.sqlite", "Brot_Regal", ""},
+    {"story_2.sqlite", "Getraenke_Gedeck", ""},
+    {"story_2.sqlite", "Getraenke_Regal", ""},
+    {"story_2.sqlite", "Muesli_Gedeck", ""},
+    {"story_2.sqlite", "Muesli_Regal", ""},
+    {"office2016.sqlite", "office2016", ""},
+};
+
+void PrintTo(const SceneFile& scene, std::ostream* out) {
+  *out << scene.scene;
+}
+
+struct Learned {
+  asr_ism::Demonstration demonstration;
+  std::vector<std::pair<std::string, IsmTree>> trees;  // star, complete, optimised if stored
+};
+
+const Learned& learned(const SceneFile& scene) {
+  static std::map<std::string, std::unique_ptr<Learned>> cache;
+  std::unique_ptr<Learned>& entry = cache[scene.scene];
+  if (!entry) {
+    entry = std::make_unique<Learned>();
+    entry->demonstration = asr_ism::sqlite::readDemonstration(recording(scene.file), scene.scene);
+    const auto& objects = entry->demonstration.objects();
+    const std::size_t center = chooseStarCenter(entry->demonstration);
+    entry->trees.emplace_back(
+        "star", generateIsmTree(entry->demonstration, RelationTopology::star(objects, center), {}));
+    entry->trees.emplace_back(
+        "complete", generateIsmTree(entry->demonstration, RelationTopology::complete(objects), {}));
+    if (std::string(scene.optimised).size() > 0) {
+      const asr_common::testing::TempDir folder("recognition_properties");
+      const std::string path = folder.write("optimised.txt", scene.optimised);
+      entry->trees.emplace_back(
+          "optimised", generateIsmTree(entry->demonstration, readTopologyFile(path, objects), {}));
+    }
+  }
+  return *entry;
+}
+
+class RecordedScene : public ::testing::TestWithParam<SceneFile> {
+ protected:
+  void SetUp() override { REQUIRE_RECORDINGS(); }
+};
+
+// A random turn (about a random axis, up to 60 deg) or shift (up to 0.2 m) of one pose.
+Pose perturbed(const Pose& pose, std::mt19937& random, double scale) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const Eigen::Vector3d direction =
+      Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
+  Pose result = pose;
+  if (std::uniform_int_distribution<int>(0, 1)(random) == 0) {
+    result.orientation = (pose.orientation *
+                          Eigen::Quaterniond(Eigen::AngleAxisd(scale * 60.0 * kDegree, direction)))
+                             .normalized();
+  } else {
+    result.position += scale * 0.2 * direction;
+  }
+  return result;
+}
+
+// Seeing an object badly never scores lower than not seeing it: the instance without the object
+// is still available when the object is seen, with the object adding a similarity >= 0.
+TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
+  const Learned& scene = learned(GetParam());
+  std::mt19937 random(12);
+  double worst = 0.0;
+  for (const auto& [topology, tree] : scene.trees) {
+    const TreeRecognizer recognizer(tree);
+    // A single ISM searches every hypothesis: exact. A tree passes a few results of each sub-ISM
+    // up; where one assignment of inputs is found at several poses, only the best goes up, and
+    // the parent may have preferred another (docs/recognition.md).
+    const double tolerance = tree.isms.size() == 1 ? 1e-9 : kTreeTolerance;
+    for (int trial = 0; trial < 40; ++trial) {
+      const std::size_t step = std::uniform_int_distribution<std::size_t>(
+          0, scene.demonstration.stepCount() - 1)(random);
+      const Configuration recorded = scene.demonstration.configuration(step);
+      const std::size_t object =
+          std::uniform_int_distribution<std::size_t>(0, recorded.size() - 1)(random);
+      const double scale = std::uniform_real_distribution<double>(0.05, 1.0)(random);
+      Configuration removed = recorded;
+      removed.erase(removed.begin() + object);
+      Configuration changed = recorded;
+      changed[object].pose = perturbed(recorded[object].pose, random, scale);
+      const double without = bestConfidence(recognizer.recognize(removed));
+      const double with = bestConfidence(recognizer.recognize(changed));
+      worst = std::max(worst, without - with);
+      EXPECT_GE(with, without - tolerance)
+          << topology << " tree, set " << step << ", " << recorded[object].key.toString()
+          << " perturbed at scale " << scale;
+    }
+  }
+  std::cout << GetParam().scene << ": largest shortfall " << worst << "\n";
+}
+
+// The issue's example: in office2016 (complete tree), a marker turned about 30 deg scored 0.57
+// where the configuration without it scored 0.71, and turned by 60 deg 0.71 again. Every
+// recorded set, every object turned about its own z axis by 30 and 60 deg.
+TEST(Office2016, TurnedObjectNeverScoresLowerThanMissingObject) {
+  REQUIRE_RECORDINGS();
+  const Learned& scene = learned(kScenes[10]);
+  for (const auto& [topology, tree] : scene.trees) {
+    const TreeRecognizer recognizer(tree);
+    for (std::size_t step = 0; step < scene.demonstration.stepCount(); ++step) {
+      const Configuration recorded = scene.demonstration.configuration(step);
+      for (std::size_t object = 0; object < recorded.size(); ++object) {
+        Configuration removed = recorded;
+        removed.erase(removed.begin() + object);
+        const double without = bestConfidence(recognizer.recognize(removed));
+        for (double degrees : {30.0, 60.0}) {
+          Configuration turned = recorded;
+          turned[object].pose.orientation *=
+              Eigen::Quaterniond(Eigen::AngleAxisd(degrees * kDegree, Eigen::Vector3d::UnitZ()));
+          EXPECT_GE(bestConfidence(recognizer.recognize(turned)), without - 1e-9)
+              << topology << " tree, set " << step << ", " << recorded[object].key.toString()
+              << " turned by " << degrees << " deg";
+        }
+      }
+    }
+  }
+}
+
+// The scene's objects in place count alike in every topology: 7 of 8 give 0.875, 6 of 8 0.75.
+// Where a missing object was the reference of a sub-ISM, that ISM's reference pose comes from the
+// others' votes, a little off, and the placeholder's compliance in the parent scales the
+// similarities below it: over these cases by at most 0.065.
+TEST(Gedeck, ObjectConfidenceIsTheShareOfObjectsInPlaceInEveryTopology) {
+  REQUIRE_RECORDINGS();
+  const Learned& scene = learned(kScenes[0]);
+  const Configuration recorded = scene.demonstration.configuration(5);
+  for (const auto& [topology, tree] : scene.trees) {
+    const TreeRecognizer recognizer(tree);
+    const auto full = recognizer.recognize(recorded);
+    ASSERT_FALSE(full.empty());
+    EXPECT_NEAR(full[0].object_confidence, 1.0, 0.01) << topology;
+    for (std::size_t left_out = 0; left_out < recorded.size(); ++left_out) {
+      Configuration one_missing = recorded;
+      one_missing.erase(one_missing.begin() + left_out);
+      const auto instances = recognizer.recognize(one_missing);
+      ASSERT_FALSE(instances.empty());
+      std::cout << topology << " without " << recorded[left_out].key.type << ": confidence "
+                << instances[0].confidence << ", object confidence "
+                << instances[0].object_confidence << "\n";
+      EXPECT_NEAR(instances[0].object_confidence, 7.0 / 8.0, 0.07)
+          << topology << " without " << recorded[left_out].key.toString();
+      Configuration two_missing = one_missing;
+      two_missing.erase(two_missing.begin() + (left_out % two_missing.size()));
+      const auto fewer = recognizer.recognize(two_missing);
+      ASSERT_FALSE(fewer.empty());
+      EXPECT_NEAR(fewer[0].object_confidence, 6.0 / 8.0, 0.07) << topology;
+    }
+  }
+}
+
+Configuration withIds(Configuration configuration, const std::string& id) {
+  for (auto& estimate : configuration)
+    estimate.key.id = id;
+  return configuration;
+}
+
+// Most detectors report types only: estimates without an id, or with an id the model does not
+// know, stand for the objects of their type. Spuelkorb_3 has two PlateDeep objects: the two
+// id-less plates must be told apart by the best assignment, one estimate per object.
+TEST_P(RecordedScene, EstimatesWithoutKnownIdsMatchByType) {
+  const Learned& scene = learned(GetParam());
+  for (const auto& [topology, tree] : scene.trees) {
+    const TreeRecognizer recognizer(tree);
+    for (std::size_t step = 0; step < scene.demonstration.stepCount(); step += 9) {
+      const Configuration recorded = scene.demonstration.configuration(step);
+      const auto with_ids = recognizer.recognize(recorded);
+      ASSERT_FALSE(with_ids.empty());
+      EXPECT_FALSE(with_ids[0].ids_ignored);
+      for (const std::string id : {"", "no-such-id"}) {
+        const auto by_type = recognizer.recognize(withIds(recorded, id));
+        const std::string what =
+            topology + " tree, set " + std::to_string(step) + ", ids '" + id + "'";
+        ASSERT_FALSE(by_type.empty()) << what;
+        EXPECT_TRUE(by_type[0].ids_ignored) << what;
+        EXPECT_NEAR(by_type[0].confidence, with_ids[0].confidence, 1e-9) << what;
+        EXPECT_NEAR(by_type[0].object_confidence, with_ids[0].object_confidence, 1e-9) << what;
+        EXPECT_TRUE(by_type[0].missing.empty()) << what;
+        // One estimate per object.
+        std::set<int> used;
+        for (const InstanceObject& object : by_type[0].objects)
+          EXPECT_TRUE(used.insert(object.estimate).second) << what << ": " << object.key.toString();
+      }
+    }
+  }
+}
+
+TEST(TypeMatching, UnknownTypesStayClutterAndKnownIdsKeepObjectsApart) {
+  REQUIRE_RECORDINGS();
+  const Learned& scene = learned(kScenes[3]);  // Spuelkorb_3: two PlateDeep
+  const TreeRecognizer recognizer(scene.trees[0].second);
+  Configuration configuration = scene.demonstration.configuration(4);
+  configuration.push_back({{"Toaster", ""}, configuration[0].pose});
+  const auto instances = recognizer.recognize(configuration);
+  ASSERT_FALSE(instances.empty());
+  EXPECT_FALSE(instances[0].ids_ignored);
+  EXPECT_NEAR(instances[0].confidence,
+              bestConfidence(recognizer.recognize(scene.demonstration.configuration(4))), 1e-12);
+  // Swapping the ids of the two plates swaps which estimate each object gets.
+  std::vector<std::size_t> plates;
+  for (std::size_t e = 0; e < configuration.size(); ++e) {
+    if (configuration[e].key.type == "PlateDeep")
+      plates.push_back(e);
+  }
+  ASSERT_EQ(plates.size(), 2u);
+  Configuration swapped = configuration;
+  std::swap(swapped[plates[0]].key.id, swapped[plates[1]].key.id);
+  const auto swapped_instances = recognizer.recognize(swapped);
+  ASSERT_FALSE(swapped_instances.empty());
+  EXPECT_LT(swapped_instances[0].confidence, instances[0].confidence - 0.05);
+}
+
+TEST(TypeMatching, TooManyAssignmentsAreRefusedClearly) {
+  REQUIRE_RECORDINGS();
+  const Learned& scene = learned(kScenes[3]);
+  TreeRecognitionParameters parameters;
+  parameters.max_labellings = 8;
+  const TreeRecognizer recognizer(scene.trees[0].second, parameters);
+  Configuration configuration = withIds(scene.demonstration.configuration(4), "");
+  for (int copy = 0; copy < 3; ++copy) {
+    for (const auto& estimate : scene.demonstration.configuration(4)) {
+      if (estimate.key.type == "PlateDeep")
+        configuration.push_back({{"PlateDeep", ""}, estimate.pose});
+    }
+  }
+  try {
+    recognizer.recognize(configuration);
+    ADD_FAILURE() << "no error";
+  } catch (const asr_common::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("more than 8 ways"), std::string::npos)
+        << error.what();
+  }
+  parameters.max_estimates = 5;
+  try {
+    TreeRecognizer(scene.trees[0].second, parameters).recognize(configuration);
+    ADD_FAILURE() << "no error";
+  } catch (const asr_common::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("more than the configured maximum of 5"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+std::string sceneName(const ::testing::TestParamInfo<SceneFile>& info) {
+  return info.param.scene;
+}
+
+INSTANTIATE_TEST_SUITE_P(Recordings, RecordedScene, ::testing::ValuesIn(kScenes), sceneName);
+
+}  // namespace
+}  // namespace asr_ism_tree
