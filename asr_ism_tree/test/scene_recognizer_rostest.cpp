@@ -220,6 +220,9 @@ TEST_F(SceneRecognizerNodeTest, AFarEstimateInContinuousModeIsRejectedAndRecogni
 
 TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
   ros::ServiceClient reload = handle_.serviceClient<asr_msgs::ReloadModel>("reload_model");
+  // The node advertises its services one after another: recognize_scenes being up says nothing
+  // about reload_model.
+  ASSERT_TRUE(reload.waitForExistence(ros::Duration(30))) << "no reload_model service";
   asr_msgs::ReloadModel broken;
   broken.request.model_files = {dir_.file("missing.sqlite")};
   ASSERT_TRUE(reload.call(broken));
