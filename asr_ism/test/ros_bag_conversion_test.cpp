@@ -11,6 +11,7 @@
 #include "asr_common/ros/object_estimate_message.hpp"
 #include "asr_common/testing/input_error_of.hpp"
 #include "asr_common/testing/temp_dir.hpp"
+#include "asr_common/testing/transform_message.hpp"
 #include "asr_ism/ros/bag_conversion.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/synthetic_demonstration.hpp"
@@ -32,14 +33,8 @@ class BagConversionTest : public ::testing::Test {
              Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ())));
     rosbag::Bag bag(bag_, rosbag::bagmode::Write);
     tf2_msgs::TFMessage transforms;
-    geometry_msgs::TransformStamped transform;
-    transform.header.frame_id = "map";
-    transform.header.stamp = ros::Time(100);
-    transform.child_frame_id = "camera";
-    transform.transform.translation.z = 1.0;
-    transform.transform.rotation.z = camera_in_map_.orientation.z();
-    transform.transform.rotation.w = camera_in_map_.orientation.w();
-    transforms.transforms.push_back(transform);
+    transforms.transforms.push_back(
+        asr_common::testing::transformMessage("map", "camera", camera_in_map_, ros::Time(100)));
     bag.write("/tf_static", ros::Time(100), transforms);
     for (std::size_t step = 0; step < demonstration_.stepCount(); ++step) {
       asr_msgs::ObjectEstimateList list;

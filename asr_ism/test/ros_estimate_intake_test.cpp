@@ -6,6 +6,7 @@
 
 #include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/object_estimate_message.hpp"
+#include "asr_common/testing/transform_message.hpp"
 #include "asr_ism/common_types.hpp"
 #include "asr_ism/ros/estimate_intake.hpp"
 
@@ -14,6 +15,7 @@ namespace asr_ism::ros_interface {
 using asr_common::ros_interface::fromEstimateMessage;
 using asr_common::ros_interface::guardCallback;
 using asr_common::ros_interface::toEstimateMessage;
+using asr_common::testing::transformMessage;
 namespace {
 
 asr_msgs::ObjectEstimate cupIn(const std::string& frame) {
@@ -65,15 +67,11 @@ TEST(RosObjectEstimateMessage, BadEstimatesNameTheEstimate) {
 TEST(RosEstimateIntake, TransformsIntoTheFixedFrameAndCountsRejections) {
   ros::Time::init();
   tf2_ros::Buffer buffer;
-  geometry_msgs::TransformStamped camera_in_map;
-  camera_in_map.header.frame_id = "map";
-  camera_in_map.header.stamp = ros::Time(100.0);
-  camera_in_map.child_frame_id = "camera";
-  camera_in_map.transform.translation.z = 1.5;
   // The camera looks along the map's x axis turned by 90 degrees about z.
-  camera_in_map.transform.rotation.z = std::sqrt(0.5);
-  camera_in_map.transform.rotation.w = std::sqrt(0.5);
-  buffer.setTransform(camera_in_map, "test", true);
+  const Pose camera_in_map(Eigen::Vector3d(0, 0, 1.5),
+                           Eigen::Quaterniond(std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)));
+  buffer.setTransform(transformMessage("map", "camera", camera_in_map, ros::Time(100.0)), "test",
+                      true);
 
   EstimateIntake intake(buffer, "map", ros::Duration(0.0));
   const auto in_map = intake.accept(cupIn("camera"));
@@ -102,13 +100,9 @@ TEST(RosEstimateIntake, FarAwayEstimatesAreRejectedWithTheirReason) {
   // An estimate 1e5 m from the origin used to reach the voting space and end the recogniser.
   ros::Time::init();
   tf2_ros::Buffer buffer;
-  geometry_msgs::TransformStamped far_camera;
-  far_camera.header.frame_id = "map";
-  far_camera.header.stamp = ros::Time(100.0);
-  far_camera.child_frame_id = "far_camera";
-  far_camera.transform.translation.x = 999.5;
-  far_camera.transform.rotation.w = 1.0;
-  buffer.setTransform(far_camera, "test", true);
+  const Pose far_camera(Eigen::Vector3d(999.5, 0, 0), Eigen::Quaterniond::Identity());
+  buffer.setTransform(transformMessage("map", "far_camera", far_camera, ros::Time(100.0)), "test",
+                      true);
   EstimateIntake intake(buffer, "map", ros::Duration(0.0));
   auto far = cupIn("map");
   far.pose.pose.position.x = 1e5;
