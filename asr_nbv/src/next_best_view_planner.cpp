@@ -72,16 +72,17 @@ class HypothesisGrid {
   std::map<std::pair<long, long>, std::vector<std::size_t>> cells_;
 };
 
-// Headings of a level whose axis lies within `angle` of a direction with this elevation and
-// azimuth: [first, first + count) modulo the level's headings.
-std::pair<long, long> headingWindow(const TiltLevel& level, double elevation, double azimuth,
-                                    double angle) {
+// Headings of a level whose axis lies within an angle (its cosine `cosine`) of a direction
+// with this elevation (its sine and cosine) and azimuth: [first, first + count) modulo the
+// level's headings. From cos(angle) = sin e1 sin e2 + cos e1 cos e2 cos(azimuth difference).
+std::pair<long, long> headingWindow(const TiltLevel& level, double level_sine, double level_cosine,
+                                    double sine, double cosine_elevation, double azimuth,
+                                    double cosine) {
   const long all = static_cast<long>(level.headings);
-  const double denominator = std::cos(level.elevation) * std::cos(elevation);
+  const double denominator = level_cosine * cosine_elevation;
   if (denominator < 1e-9)
     return {0, all};
-  const double q =
-      (std::cos(angle) - std::sin(level.elevation) * std::sin(elevation)) / denominator;
+  const double q = (cosine - level_sine * sine) / denominator;
   if (q > 1.0)
     return {0, 0};
   if (q <= -1.0)
@@ -110,6 +111,21 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
       pool_(pool),
       orientations_(robot, parameters_.orientation_step, seed) {
   checkNbvParameters(parameters_);
+  const double side_angle = std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0;
+  for (const TiltLevel& level : orientations_.levels()) {
+    band_low_.push_back(std::tan(std::max(level.elevation - side_angle, -M_PI / 2 + 1e-6)));
+    band_high_.push_back(std::tan(std::min(level.elevation + side_angle, M_PI / 2 - 1e-6)));
+    level_sine_.push_back(std::sin(level.elevation));
+    level_cosine_.push_back(std::cos(level.elevation));
+    // How far the camera can be from the base's centre on the floor, over the pan range.
+    for (int i = 0; i <= 64; ++i) {
+      const double pan = robot.pan.lower + (robot.pan.upper - robot.pan.lower) * i / 64.0;
+      camera_reach_ = std::max(
+          camera_reach_,
+          asr_robot_model::cameraInBase(robot, pan, level.tilt).translation().head<2>().norm());
+    }
+  }
+  camera_reach_ += 0.01;  // the pan samples' margin
 }
 
 void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
@@ -118,42 +134,47 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
                                       std::vector<Candidate>& candidates) const {
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
   const double side_angle = std::min(frustum.fovx(), frustum.fovy()) / 2.0;
+  const double side_cosine = std::cos(side_angle);
+  const double reach = frustum.far() / side_cosine;
   const std::size_t type_count = hypotheses.types().size();
+  const std::vector<TiltLevel>& levels = orientations_.levels();
   thread_local std::vector<double> utility;  // orientation x type
   thread_local std::vector<char> touched;
-  thread_local std::vector<std::pair<std::size_t, double>> pending;
   utility.assign(orientations_.size() * type_count, 0.0);
   touched.assign(orientations_.size(), 0);
-  for (const TiltLevel& level : orientations_.levels()) {
-    const Eigen::Vector3d camera(position.x(), position.y(), level.camera_height);
-    for (std::size_t index : nearby) {
-      const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
-      const Eigen::Vector3d offset = hypothesis.box.pose.position - camera;
-      const double distance = offset.norm();
-      if (distance <= frustum.near() || distance * std::cos(side_angle) >= frustum.far())
+  for (std::size_t index : nearby) {
+    const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
+    const Eigen::Vector3d& point = hypothesis.box.pose.position;
+    const Eigen::Vector2d across = point.head<2>() - position;
+    const double horizontal = across.norm();
+    const double azimuth = std::atan2(across.y(), across.x());
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+      const TiltLevel& level = levels[l];
+      // Only levels whose axis elevation lies within the side angle of the hypothesis' can see
+      // it: a slope test, no arc function.
+      const double rise = point.z() - level.camera_height;
+      if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
         continue;
-      const double elevation = std::asin(std::clamp(offset.z() / distance, -1.0, 1.0));
-      if (std::abs(elevation - level.elevation) >= side_angle)
+      const Eigen::Vector3d camera(position.x(), position.y(), level.camera_height);
+      const Eigen::Vector3d offset = point - camera;
+      const double distance = offset.norm();
+      if (distance <= frustum.near() || distance >= reach)
         continue;
       const double orientation = orientationUtility(hypothesis, camera, parameters_.rating_angle);
       if (orientation == 0.0)
         continue;
       const auto [first, count] =
-          headingWindow(level, elevation, std::atan2(offset.y(), offset.x()), side_angle);
-      pending.clear();
+          headingWindow(level, level_sine_[l], level_cosine_[l], rise / distance,
+                        horizontal / distance, azimuth, side_cosine);
       const long headings = static_cast<long>(level.headings);
       for (long h = first; h < first + count; ++h) {
         const std::size_t o = level.first_orientation +
                               static_cast<std::size_t>(((h % headings) + headings) % headings);
         const double terms = sideProximity(orientations_.axis(o), offset, frustum);
-        if (terms > 0.0)
-          pending.emplace_back(o, orientation * terms);
-      }
-      if (pending.empty() || !map_.lineOfSight(camera, hypothesis.box))
-        continue;
-      for (const auto& [o, u] : pending) {
-        utility[o * type_count + hypothesis.type] += u;
-        touched[o] = 1;
+        if (terms > 0.0) {
+          utility[o * type_count + hypothesis.type] += orientation * terms;
+          touched[o] = 1;
+        }
       }
     }
   }
@@ -174,16 +195,41 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   }
 }
 
+asr_common::Pose NextBestViewPlanner::cameraOf(
+    const Candidate& candidate, const std::vector<Eigen::Vector2d>& positions) const {
+  const TiltLevel& level = orientations_.levels()[orientations_.levelOf(candidate.orientation)];
+  const Eigen::Vector2d& xy = positions[candidate.position];
+  asr_common::Pose camera;
+  camera.position = Eigen::Vector3d(xy.x(), xy.y(), level.camera_height);
+  camera.orientation = Eigen::Quaterniond(orientations_.rotation(candidate.orientation));
+  return camera;
+}
+
+std::vector<double> NextBestViewPlanner::occludedUtility(const HypothesisSet& hypotheses,
+                                                         const std::vector<std::size_t>& nearby,
+                                                         const asr_common::Pose& camera) const {
+  std::vector<double> per_type(hypotheses.types().size(), 0.0);
+  for (std::size_t index : nearby) {
+    const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
+    const double u = hypothesisUtility(camera, hypothesis, parameters_);
+    if (u > 0.0 && map_.lineOfSight(camera.position, hypothesis.box))
+      per_type[hypothesis.type] += u;
+  }
+  return per_type;
+}
+
 NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
     const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
     const RobotState& current) const {
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
-  const HypothesisGrid grid(hypotheses, frustum.far());
+  const double reach = frustum.far() / std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
+  const HypothesisGrid grid(hypotheses, reach);
+  std::vector<std::vector<std::size_t>> nearby(positions.size());
   std::vector<std::vector<Candidate>> per_position(positions.size());
   auto rate_position = [&](std::size_t p) {
-    const std::vector<std::size_t> nearby = grid.near(hypotheses, positions[p], frustum.far());
-    if (!nearby.empty())
-      utilitiesAt(hypotheses, nearby, positions[p], p, per_position[p]);
+    nearby[p] = grid.near(hypotheses, positions[p], reach);
+    if (!nearby[p].empty())
+      utilitiesAt(hypotheses, nearby[p], positions[p], p, per_position[p]);
   };
   if (pool_ != nullptr)
     pool_->parallelFor(positions.size(), rate_position);
@@ -198,30 +244,58 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   Step step;
   if (candidates.empty())
     return step;
-  double utility_max = 0.0;
-  bool worth_moving = false;
-  for (const Candidate& candidate : candidates) {
-    utility_max = std::max(utility_max, candidate.total);
-    worth_moving = worth_moving || candidate.total > parameters_.min_utility_for_moving;
-  }
 
-  // Types and the rating's upper bound (all motion free) per candidate, then inverse kinematics
-  // in falling order of the bound until no bound can beat the best rating found.
+  // Occlusion only lowers utilities, so the utilities without it bound the exact ones: line of
+  // sight is checked only for the candidates whose bound can still win, best bound first.
+  std::vector<std::vector<double>> exact(candidates.size());
+  std::vector<double> exact_total(candidates.size(), -1.0);
+  auto exactUtility = [&](std::size_t c) {
+    if (exact_total[c] < 0.0) {
+      exact[c] = occludedUtility(hypotheses, nearby[candidates[c].position],
+                                 cameraOf(candidates[c], positions));
+      exact_total[c] = std::accumulate(exact[c].begin(), exact[c].end(), 0.0);
+    }
+    return exact_total[c];
+  };
+  std::vector<std::size_t> by_utility(candidates.size());
+  std::iota(by_utility.begin(), by_utility.end(), 0);
+  std::stable_sort(by_utility.begin(), by_utility.end(), [&](std::size_t a, std::size_t b) {
+    return candidates[a].total > candidates[b].total;
+  });
+  double utility_max = 0.0;
+  for (std::size_t c : by_utility) {
+    if (candidates[c].total <= utility_max)
+      break;
+    utility_max = std::max(utility_max, exactUtility(c));
+  }
+  if (utility_max <= 0.0)
+    return step;
+  const bool worth_moving = utility_max > parameters_.min_utility_for_moving;
+
+  // Types and the rating's upper bound (motion free, no occlusion) per candidate, then exact
+  // utility and inverse kinematics in falling order of the bound until none can beat the best.
   const RatingWeights& weights = parameters_.weights;
   const std::size_t type_count = hypotheses.countingTypes();
-  std::vector<TypeChoice> choices(candidates.size());
   std::vector<double> bounds(candidates.size(), -1.0);
   std::vector<double> dense(hypotheses.types().size());
+  // The base must carry the camera at least this far: the rating's base term is bounded.
+  const Eigen::Vector2d base(current.x, current.y);
+  const double sigma = parameters_.base_distance_sigma;
+  auto boundOf = [&](const TypeChoice& choice, const Eigen::Vector2d& camera) {
+    InverseCosts best_motion;
+    const double drive = std::max(0.0, (camera - base).norm() - camera_reach_);
+    best_motion.base = std::exp(-drive * drive / (2.0 * sigma * sigma));
+    best_motion.recognition = 1.0 - static_cast<double>(choice.types.size()) / type_count;
+    return rating(choice.utility, utility_max, best_motion, weights);
+  };
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     if (worth_moving && candidates[c].total <= parameters_.min_utility_for_moving)
       continue;
     std::fill(dense.begin(), dense.end(), 0.0);
     for (const auto& [type, u] : candidates[c].per_type)
       dense[type] = u;
-    choices[c] = bestTypeSubset(dense, utility_max, type_count, weights);
-    InverseCosts free_motion;
-    free_motion.recognition = 1.0 - static_cast<double>(choices[c].types.size()) / type_count;
-    bounds[c] = rating(choices[c].utility, utility_max, free_motion, weights);
+    bounds[c] = boundOf(bestTypeSubset(dense, utility_max, type_count, weights),
+                        positions[candidates[c].position]);
   }
   std::vector<std::size_t> order(candidates.size());
   std::iota(order.begin(), order.end(), 0);
@@ -234,20 +308,22 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   for (std::size_t c : order) {
     if (bounds[c] < 0.0 || bounds[c] <= best_rating)
       break;
-    const Candidate& candidate = candidates[c];
-    const TiltLevel& level = orientations_.levels()[orientations_.levelOf(candidate.orientation)];
-    const Eigen::Vector3d camera(positions[candidate.position].x(),
-                                 positions[candidate.position].y(), level.camera_height);
-    const Eigen::Quaterniond orientation(orientations_.rotation(candidate.orientation));
+    const double total = exactUtility(c);
+    if (total <= 0.0 || (worth_moving && total <= parameters_.min_utility_for_moving))
+      continue;
+    const TypeChoice choice = bestTypeSubset(exact[c], utility_max, type_count, weights);
+    if (boundOf(choice, positions[candidates[c].position]) <= best_rating)
+      continue;
+    const asr_common::Pose camera = cameraOf(candidates[c], positions);
     const asr_robot_model::IkResult ik =
-        kinematics_.solve(camera, orientation, current, base_is_free);
+        kinematics_.solve(camera.position, camera.orientation, current, base_is_free);
     if (!ik.reachable)
       continue;
     const asr_robot_model::Motion motion =
         asr_robot_model::motionBetween(current, ik.state, kinematics_.speeds());
-    const InverseCosts costs = inverseCosts(motion, current, ik.state, robot_,
-                                            choices[c].types.size(), type_count, parameters_);
-    const double value = rating(choices[c].utility, utility_max, costs, weights);
+    const InverseCosts costs = inverseCosts(motion, current, ik.state, robot_, choice.types.size(),
+                                            type_count, parameters_);
+    const double value = rating(choice.utility, utility_max, costs, weights);
     if (value > best_rating) {
       best_rating = value;
       PlannedView& view = step.view;
@@ -255,9 +331,9 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
       view.camera = ik.camera;
       view.state = ik.state;
       view.types.clear();
-      for (int type : choices[c].types)
+      for (int type : choice.types)
         view.types.push_back(hypotheses.types()[type]);
-      view.utility = choices[c].utility;
+      view.utility = choice.utility;
       view.utility_max = utility_max;
       view.rating = value;
       view.costs = costs;

@@ -7,6 +7,17 @@
 namespace asr_nbv {
 namespace {
 
+// cos(angle), remembered for the last angle asked on this thread: the thresholds are the same
+// for millions of calls.
+double cosineOf(double angle) {
+  thread_local double last_angle = 0.0, last_cosine = 1.0;
+  if (angle != last_angle) {
+    last_angle = angle;
+    last_cosine = std::cos(angle);
+  }
+  return last_cosine;
+}
+
 double angleBetweenVectors(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
@@ -33,9 +44,11 @@ double orientationUtility(const Hypothesis& hypothesis, const Eigen::Vector3d& c
   if (hypothesis.normals.empty())
     return hypothesis.active[0] ? 1.0 : 0.0;
   const Eigen::Vector3d to_camera = camera_position - hypothesis.box.pose.position;
+  // Normals at least rating_angle away contribute nothing: skip them without an arc function.
+  const double cosine_limit = cosineOf(rating_angle) * to_camera.norm();
   double best = 0.0;
   for (std::size_t n = 0; n < hypothesis.normals.size(); ++n) {
-    if (hypothesis.active[n])
+    if (hypothesis.active[n] && to_camera.dot(hypothesis.normals[n]) > cosine_limit)
       best = std::max(
           best, raisedCosine(angleBetweenVectors(to_camera, hypothesis.normals[n]), rating_angle));
   }
@@ -44,13 +57,16 @@ double orientationUtility(const Hypothesis& hypothesis, const Eigen::Vector3d& c
 
 double sideProximity(const Eigen::Vector3d& axis, const Eigen::Vector3d& offset,
                      const asr_robot_model::Frustum& frustum) {
-  const double side = raisedCosine(angleBetweenVectors(axis, offset),
-                                   std::min(frustum.fovx(), frustum.fovy()) / 2.0);
-  if (side == 0.0)
+  const double side_angle = std::min(frustum.fovx(), frustum.fovy()) / 2.0;
+  const double depth = axis.dot(offset);
+  if (depth <= cosineOf(side_angle) * offset.norm())
     return 0.0;
   const double middle = (frustum.near() + frustum.far()) / 2.0;
-  return side *
-         raisedCosine(std::abs(axis.dot(offset) - middle), (frustum.far() - frustum.near()) / 2.0);
+  const double proximity =
+      raisedCosine(std::abs(depth - middle), (frustum.far() - frustum.near()) / 2.0);
+  if (proximity == 0.0)
+    return 0.0;
+  return proximity * raisedCosine(angleBetweenVectors(axis, offset), side_angle);
 }
 
 double hypothesisUtility(const asr_common::Pose& camera, const Hypothesis& hypothesis,

@@ -59,6 +59,12 @@ class NextBestViewPlanner {
   void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<std::size_t>& nearby,
                    const Eigen::Vector2d& position, std::size_t position_index,
                    std::vector<Candidate>& candidates) const;
+  asr_common::Pose cameraOf(const Candidate& candidate,
+                            const std::vector<Eigen::Vector2d>& positions) const;
+  /// Utility per type of the hypotheses `nearby` seen from `camera`, occluded ones excluded.
+  std::vector<double> occludedUtility(const HypothesisSet& hypotheses,
+                                      const std::vector<std::size_t>& nearby,
+                                      const asr_common::Pose& camera) const;
 
   asr_robot_model::RobotDescription robot_;
   asr_robot_model::InverseKinematics kinematics_;
@@ -67,6 +73,11 @@ class NextBestViewPlanner {
   NbvParameters parameters_;
   asr_ism::ThreadPool* pool_;
   CandidateOrientations orientations_;
+  // Per tilt level, the slopes (rise / run) between which a hypothesis can be within the side
+  // angle of the level's axis elevation.
+  std::vector<double> band_low_, band_high_;
+  std::vector<double> level_sine_, level_cosine_;  // of each level's axis elevation
+  double camera_reach_ = 0.0;  // metres from the base's centre to the camera, on the floor
 };
 
 }  // namespace asr_nbv
