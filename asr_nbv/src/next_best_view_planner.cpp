@@ -343,6 +343,19 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   return step;
 }
 
+bool NextBestViewPlanner::reachable(const Eigen::Vector2d& camera) const {
+  constexpr int kSamples = 16;
+  if (map_.baseIsFree(camera.x(), camera.y()))
+    return true;
+  for (int i = 0; i < kSamples; ++i) {
+    const double angle = 2.0 * M_PI * i / kSamples;
+    if (map_.baseIsFree(camera.x() + camera_reach_ * std::cos(angle),
+                        camera.y() + camera_reach_ * std::sin(angle)))
+      return true;
+  }
+  return false;
+}
+
 PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
                                       const RobotState& current) const {
   asr_robot_model::checkFinite(current, "current robot state");
@@ -356,8 +369,12 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
   std::size_t rated = 0;
   for (int k = 0; k < parameters_.max_steps; ++k) {
     const double radius = std::pow(scale, 0.382) * parameters_.lattice_radius;
-    const std::vector<Eigen::Vector2d> positions =
-        hexagonalLattice(centre, radius, reach, low, high);
+    std::vector<Eigen::Vector2d> positions = hexagonalLattice(centre, radius, reach, low, high);
+    // Like the original's costmap: drop positions the base cannot carry the camera to (the
+    // lattice's centre, where the camera is or was chosen, stays).
+    positions.erase(std::remove_if(positions.begin() + 1, positions.end(),
+                                   [this](const Eigen::Vector2d& xy) { return !reachable(xy); }),
+                    positions.end());
     rated += positions.size() * orientations_.size();
     Step step = rateStep(hypotheses, positions, current);
     if (!step.found)

@@ -59,14 +59,16 @@ double sideProximity(const Eigen::Vector3d& axis, const Eigen::Vector3d& offset,
                      const asr_robot_model::Frustum& frustum) {
   const double side_angle = std::min(frustum.fovx(), frustum.fovy()) / 2.0;
   const double depth = axis.dot(offset);
-  if (depth <= cosineOf(side_angle) * offset.norm())
+  const double distance = offset.norm();
+  if (depth <= cosineOf(side_angle) * distance)
     return 0.0;
   const double middle = (frustum.near() + frustum.far()) / 2.0;
   const double proximity =
       raisedCosine(std::abs(depth - middle), (frustum.far() - frustum.near()) / 2.0);
   if (proximity == 0.0)
     return 0.0;
-  return proximity * raisedCosine(angleBetweenVectors(axis, offset), side_angle);
+  // Within the side angle (< 90 deg) the arc cosine is accurate enough and cheaper than atan2.
+  return proximity * raisedCosine(std::acos(std::min(1.0, depth / distance)), side_angle);
 }
 
 double hypothesisUtility(const asr_common::Pose& camera, const Hypothesis& hypothesis,
@@ -159,22 +161,26 @@ std::size_t updateAfterView(HypothesisSet& hypotheses, const asr_common::Pose& c
       searched[index] = 1;
   }
   std::size_t deactivated = 0;
+  std::vector<std::size_t> seen;
   for (Hypothesis& hypothesis : hypotheses.hypotheses()) {
     if (!hypothesis.counts() || !searched[hypothesis.type] ||
-        !inFrustum(camera, hypothesis.box.pose.position, parameters.frustum) ||
-        (map != nullptr && !map->lineOfSight(camera.position, hypothesis.box)))
+        !inFrustum(camera, hypothesis.box.pose.position, parameters.frustum))
       continue;
     const Eigen::Vector3d to_camera = camera.position - hypothesis.box.pose.position;
+    seen.clear();
     for (std::size_t n = 0; n < hypothesis.active.size(); ++n) {
-      const bool seen =
-          hypothesis.normals.empty() ||
-          angleBetweenVectors(to_camera, hypothesis.normals[n]) < parameters.update_angle;
-      if (hypothesis.active[n] && seen) {
-        hypothesis.active[n] = 0;
-        --hypothesis.active_count;
-        ++deactivated;
-      }
+      if (hypothesis.active[n] &&
+          (hypothesis.normals.empty() ||
+           angleBetweenVectors(to_camera, hypothesis.normals[n]) < parameters.update_angle))
+        seen.push_back(n);
     }
+    // The line of sight last: it is the expensive test.
+    if (seen.empty() || (map != nullptr && !map->lineOfSight(camera.position, hypothesis.box)))
+      continue;
+    for (std::size_t n : seen)
+      hypothesis.active[n] = 0;
+    hypothesis.active_count -= static_cast<int>(seen.size());
+    deactivated += seen.size();
   }
   return deactivated;
 }

@@ -59,6 +59,9 @@ class NextBestViewPlanner {
   void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<std::size_t>& nearby,
                    const Eigen::Vector2d& position, std::size_t position_index,
                    std::vector<Candidate>& candidates) const;
+  /// False if no base position within camera_reach_ of the camera's floor point (sampled on
+  /// its circle) is free: the camera cannot be carried there.
+  bool reachable(const Eigen::Vector2d& camera) const;
   asr_common::Pose cameraOf(const Candidate& candidate,
                             const std::vector<Eigen::Vector2d>& positions) const;
   /// Utility per type of the hypotheses `nearby` seen from `camera`, occluded ones excluded.
