@@ -17,7 +17,11 @@ struct ClutterRow {
   double milliseconds = 0.0;  // fastest of up to three runs; 0 if not run
   double best_confidence = 0.0;
   std::size_t instances = 0;
-  bool run = false;  // false: skipped, a smaller size of this topology took too long
+  std::size_t merged = 0;  // repeated detections merged away
+  bool run = false;        // false: skipped, a smaller size of this topology took too long
+  // The best confidence of the exhaustive search (every repeated detection enters, seconds of
+  // work); measured for the smallest size only, negative where not measured.
+  double exhaustive_best_confidence = -1.0;
 };
 
 /// Estimate counts of the clutter series.
@@ -33,6 +37,6 @@ void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows);
 
 /// A configuration of `estimates` jittered copies of `recorded`'s estimates, keys kept.
 asr_common::Configuration clutteredCopies(const asr_common::Configuration& recorded,
-                                       std::size_t estimates, std::uint32_t seed);
+                                          std::size_t estimates, std::uint32_t seed);
 
 }  // namespace asr_ism_tree::bench

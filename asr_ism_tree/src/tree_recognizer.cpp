@@ -7,6 +7,7 @@
 
 #include "asr_common/input_error.hpp"
 #include "asr_ism_tree/estimate_matching.hpp"
+#include "asr_ism_tree/repeated_detections.hpp"
 
 namespace asr_ism_tree {
 
@@ -257,6 +258,19 @@ SceneInstance TreeRecognizer::assembleInstance(
   return instance;
 }
 
+void TreeRecognizer::mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
+                                   const std::vector<Pose>& poses,
+                                   TreeRecognitionStats* stats) const {
+  const RepeatedDetectionTolerance tolerance{tree_.parameters.supportRadius(),
+                                             tree_.parameters.max_angle_deviation};
+  for (std::vector<int>& estimates : estimates_of_object) {
+    const std::size_t before = estimates.size();
+    estimates = mergeRepeatedDetections(estimates, poses, tolerance);
+    if (stats != nullptr)
+      stats->merged_estimates += before - estimates.size();
+  }
+}
+
 std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configuration& configuration,
                                                      TreeRecognitionStats* stats) const {
   if (configuration.size() > parameters_.max_estimates) {
@@ -279,8 +293,10 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
     *stats = TreeRecognitionStats{};
   std::vector<SceneInstance> instances;
   for (std::size_t labelling = 0; labelling < labellings; ++labelling) {
-    const auto estimates_of_object =
+    auto estimates_of_object =
         matching.estimatesOfObjects(labelling, tree_.objects().size(), canonical);
+    if (parameters_.merge_repeated_detections)
+      mergeRepeated(estimates_of_object, poses, stats);
     const std::vector<EvaluatedIsm> evaluated = evaluateIsms(poses, estimates_of_object, stats);
     for (std::size_t r = 0; r < evaluated[0].results.size(); ++r) {
       SceneInstance instance = assembleInstance(evaluated, r, poses, estimates_of_object);

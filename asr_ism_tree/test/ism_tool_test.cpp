@@ -431,6 +431,19 @@ TEST_F(IsmToolOnSmallFiles, SetOutOfRangeIsNamed) {
                    "99999999999999999999999");
 }
 
+TEST_F(IsmToolOnSmallFiles, RequestLargerThanTheMaximumIsRefused) {
+  const std::string model = dir_.file("model.sqlite");
+  learn("table", "star", model);
+  const auto recognizeWithMaximum = [&](const std::string& maximum) {
+    return runIsm(dir_, {"recognize", "--model", model, "--demo", demo_, "--scene", "table",
+                         "--set", "0", "--max-estimates", maximum});
+  };
+  // "table" has four objects per set.
+  expectSuccess(recognizeWithMaximum("4"));
+  expectInputError(recognizeWithMaximum("3"), {"4 object estimates", "maximum of 3"});
+  expectUsageError(recognizeWithMaximum("0"), "--max-estimates");
+}
+
 TEST_F(IsmToolOnSmallFiles, DisconnectedTopologyIsNamed) {
   const std::string topology = dir_.write("topology.txt", "object_0 object_1\nobject_2 object_3\n");
   const std::string model = dir_.file("model.sqlite");

@@ -216,7 +216,10 @@ TEST(TreeRecognizer, ExactTiesAreBrokenIndependentlyOfTheInputOrder) {
       {plate, Pose(Eigen::Vector3d(0.5, 0.5625, 0.5), identity)},
       {cup, Pose(Eigen::Vector3d(0.75, 0.5625 - 0.03125, 0.5), identity)},
       {cup, Pose(Eigen::Vector3d(0.75, 0.5625 + 0.03125, 0.5), identity)}};
-  const TreeRecognizer recognizer(tree);
+  // The two cups are repeated detections of one; the search's own tie-break is under test here.
+  TreeRecognitionParameters exhaustive;
+  exhaustive.merge_repeated_detections = false;
+  const TreeRecognizer recognizer(tree, exhaustive);
   const auto original = recognizer.recognize(configuration);
   ASSERT_EQ(original.size(), 2u);
   // 1/32 m against the support radius sqrt(3)/2 x 1/8 m: compliance 1 - (1/1024) / (3/256).

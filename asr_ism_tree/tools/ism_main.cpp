@@ -11,6 +11,7 @@ const char* const kUsage =
     "             --model OUT [--bin-size M] [--max-angle-deg D]\n"
     "  info       --model M [--scene NAME]\n"
     "  recognize  --model M --scene NAME (--objects FILE | --demo DB --set K) [--json]\n"
+    "             [--max-estimates N]\n"
     "  select-topology --demo DB --scene NAME --topology-out FILE --model OUT [--tests N]\n"
     "             [--seed S] [--alpha A] [--beta B] [--max-duration-ms D] [--max-height H]\n"
     "             [--max-evaluations E] [--method hill-climbing|annealing] [--start FILE]\n"

@@ -15,12 +15,17 @@ using asr_common::cli::CommandLine;
 using asr_common::cli::UsageError;
 
 int runRecognize(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments, {"model", "scene", "objects", "demo", "set"}, {"json"});
+  const CommandLine options(
+      arguments, {"model", "scene", "objects", "demo", "set", "max-estimates"}, {"json"});
   const std::string model_path = options.required("model");
   const std::string scene = options.required("scene");
+  TreeRecognitionParameters parameters;
+  // Larger configurations are refused before any work, with the count and the limit.
+  parameters.max_estimates = static_cast<std::size_t>(options.integer(
+      "max-estimates", static_cast<long long>(parameters.max_estimates), 1, 1000000));
   const asr_common::Configuration configuration = cli::loadConfiguration(options, scene);
   const IsmTree tree = sqlite::loadIsmTree(model_path, scene);
-  const TreeRecognizer recognizer(tree);
+  const TreeRecognizer recognizer(tree, parameters);
 
   const auto start = std::chrono::steady_clock::now();
   const std::vector<SceneInstance> instances = recognizer.recognize(configuration);

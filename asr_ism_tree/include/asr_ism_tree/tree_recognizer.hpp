@@ -22,6 +22,12 @@ struct TreeRecognitionParameters {
   /// scene, each assignment of such estimates to objects is recognised and the best instances
   /// kept. More assignments than this are refused with an InputError.
   std::size_t max_labellings = 64;
+  /// Estimates of one object within the support radius and the maximum angle deviation of one
+  /// another are one detection seen again (repeated_detections.hpp): each such group enters
+  /// recognition as one estimate, so recognition time grows linearly with repeated detections
+  /// instead of with the cube of their number. false: every estimate enters (the exhaustive
+  /// search, with which every combination of repeated detections is tried).
+  bool merge_repeated_detections = true;
 };
 
 struct EvaluatedIsm;
@@ -29,6 +35,7 @@ struct EvaluatedIsm;
 struct TreeRecognitionStats {
   asr_ism::IsmRecognitionStats isms;  // summed over the tree's ISMs
   std::size_t root_results = 0;
+  std::size_t merged_estimates = 0;  // repeated detections left out, summed over labellings
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
@@ -39,7 +46,9 @@ struct TreeRecognitionStats {
 /// estimates it stands for, so the root drops results whose estimates are a subset of a better
 /// result's: each instance found uses some estimate that no better instance uses.
 /// The input order does not matter (estimates are sorted first); the output is deterministic
-/// whatever the pool's size. Clutter (objects the scene does not know) is ignored.
+/// whatever the pool's size. Clutter (objects the scene does not know) is ignored; repeated
+/// detections of one object (within the support radius and the maximum angle deviation) enter
+/// as one estimate each (TreeRecognitionParameters::merge_repeated_detections).
 class TreeRecognizer {
  public:
   /// The tree (and the pool, if given) must outlive the recognizer.
@@ -66,6 +75,9 @@ class TreeRecognizer {
   std::vector<EvaluatedIsm> evaluateIsms(const std::vector<Pose>& poses,
                                          const std::vector<std::vector<int>>& estimates_of_object,
                                          TreeRecognitionStats* stats) const;
+  // Per object, one estimate for each group of repeated detections.
+  void mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
+                     const std::vector<Pose>& poses, TreeRecognitionStats* stats) const;
   SceneInstance assembleInstance(const std::vector<EvaluatedIsm>& evaluated,
                                  std::size_t root_result, const std::vector<Pose>& poses,
                                  const std::vector<std::vector<int>>& estimates_of_object) const;

@@ -4,6 +4,8 @@
 #include <std_msgs/UInt32.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <algorithm>
+
 #include "asr_common/input_error.hpp"
 #include "asr_common/ros/callback_guard.hpp"
 #include "asr_common/ros/node_parameters.hpp"
@@ -126,6 +128,17 @@ void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
     publishRejected();
 }
 
+namespace {
+
+bool sameEstimates(const asr_common::Configuration& a, const asr_common::Configuration& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
+    return x.key == y.key && x.pose.position == y.pose.position &&
+           x.pose.orientation.coeffs() == y.pose.orientation.coeffs();
+  });
+}
+
+}  // namespace
+
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
   asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition",
                                            [&] { recognizeLatest(); });
@@ -142,9 +155,17 @@ void SceneRecognizerNode::recognizeLatest() {
     list.header.stamp = newest_stamp_;
     list.header.frame_id = intake_.fixedFrame();
   }
-  std::vector<SceneInstance> instances;
-  if (!configuration.empty())
-    instances = models->recognize(configuration);  // the guard reports what it refuses
+  // Recognition is deterministic: while the estimates and models stay the same, a tick only
+  // publishes again, so it stays cheap and keeps its period while a service call takes the CPU.
+  if (models != last_models_ || !sameEstimates(configuration, last_configuration_)) {
+    last_models_.reset();  // a refused configuration below leaves no stale cache behind
+    last_instances_.clear();
+    if (!configuration.empty())
+      last_instances_ = models->recognize(configuration);  // the guard reports what it refuses
+    last_models_ = models;
+    last_configuration_ = std::move(configuration);
+  }
+  const std::vector<SceneInstance>& instances = last_instances_;
   for (const SceneInstance& instance : instances)
     list.instances.push_back(toSceneInstanceMessage(instance, list.header));
   instances_publisher_.publish(list);

@@ -25,7 +25,7 @@ namespace asr_ism_tree::ros_interface {
 /// topic `objects` is recognised at `rate` and published on scene_instances and scene_markers.
 /// Rejected estimates are counted on ~rejected_estimates (latched). Recognition runs outside the
 /// lock on a snapshot of the models, so a service call (on its own thread) never holds up the
-/// timer.
+/// timer; a tick whose estimates and models did not change republishes its last instances.
 class SceneRecognizerNode {
  public:
   /// Reads and checks the parameters and loads the models: throws InputError naming the
@@ -58,6 +58,11 @@ class SceneRecognizerNode {
   asr_ism::ros_interface::EstimateIntake intake_;
   asr_ism::LatestEstimates latest_;
   ros::Time newest_stamp_;
+  // The timer's last recognition (only the timer thread touches these): a tick whose estimates
+  // and models are unchanged publishes it again instead of recognising anew.
+  std::shared_ptr<const SceneModels> last_models_;
+  asr_common::Configuration last_configuration_;
+  std::vector<SceneInstance> last_instances_;
 
   ros::Publisher instances_publisher_;
   ros::Publisher markers_publisher_;
