@@ -66,5 +66,19 @@ TEST(CommandLineInteger, TheIssuesExamplesAreRefused) {
   EXPECT_EQ(CommandLine({}, {"n"}, {}).integer("n", 42, 0, 10), 42);  // the fallback as given
 }
 
+TEST(CommandLineNumbers, ExactlyTheCountOfFiniteNumbers) {
+  EXPECT_EQ(withValue(" 1 -2.5  3e1 ").numbers("n", 3, "a b c"),
+            (std::vector<double>{1.0, -2.5, 30.0}));
+  for (const char* bad : {"1 2", "1 2 3 4", "1 nan 3", "1 inf 3", "1 2x 3", ""}) {
+    try {
+      withValue(bad).numbers("n", 3, "a b c");
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const UsageError& error) {
+      EXPECT_NE(error.message.find("--n"), std::string::npos) << error.message;
+    }
+  }
+  EXPECT_THROW(CommandLine({}, {"n"}, {}).numbers("n", 1, "a"), UsageError);  // required
+}
+
 }  // namespace
 }  // namespace asr_common::cli

@@ -98,6 +98,7 @@ TEST(Planner, LoneFarObjectMakesItDrive) {
   EXPECT_GT(std::hypot(view.state.x - current.x, view.state.y - current.y), 3.0);
   EXPECT_LT(view.costs.base, 1.0);
   EXPECT_GT(hypothesisUtility(view.camera, set.hypotheses()[0], p), 0.0);
+  EXPECT_NEAR(viewUtility(view.camera, set, p, &scene.map).total, view.utility, 1e-4);
   // The camera pose is what the robot state gives (forward kinematics).
   EXPECT_TRUE(asr_common::approximatelyEqual(
       view.camera, asr_robot_model::cameraPose(robot(), view.state), 1e-9, 1e-9));
@@ -122,6 +123,12 @@ TEST(Planner, SameAnswerForAnyThreadCount) {
   views.push_back(
       NextBestViewPlanner(robot(), scene.world, scene.map, p, nullptr, 9).plan(set, current));
   ASSERT_TRUE(views[0].found);
+  // The utility the planner rated is the one the view has (occlusion included), over its types.
+  const ViewUtility seen = viewUtility(views[0].camera, set, p, &scene.map);
+  double searched = 0.0;
+  for (const std::string& type : views[0].types)
+    searched += seen.per_type[set.typeIndex(type)];
+  EXPECT_NEAR(searched, views[0].utility, 1e-4 * views[0].utility);  // IK: within 1e-6 m
   for (const PlannedView& view : views) {
     EXPECT_EQ(view.camera.position, views[0].camera.position);
     EXPECT_EQ(view.camera.orientation.coeffs(), views[0].camera.orientation.coeffs());

@@ -9,9 +9,6 @@
 
 namespace asr_nbv::tools {
 
-/// {"position": {x, y, z}, "orientation": {x, y, z, w}}
-nlohmann::ordered_json poseJson(const asr_common::Pose& pose);
-
 /// {"found", "view": {"camera", "state", "types"}, "utility", "utility_max", "rating",
 ///  "costs": {"base", "rotation", "pan_tilt", "recognition", "motion_seconds"},
 ///  "candidates_rated", "steps"}

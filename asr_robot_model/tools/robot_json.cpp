@@ -1,40 +1,8 @@
 #include "robot_json.hpp"
 
-#include <cmath>
-#include <sstream>
 #include <vector>
 
 namespace asr_robot_model::tools {
-
-using asr_common::cli::UsageError;
-
-namespace {
-
-// Exactly `count` finite numbers separated by spaces.
-std::vector<double> numbers(const asr_common::cli::CommandLine& options, const std::string& name,
-                            std::size_t count, const std::string& form) {
-  std::istringstream text(options.required(name));
-  std::vector<double> values;
-  std::string word;
-  while (text >> word) {
-    std::size_t used = 0;
-    double value = NAN;
-    try {
-      value = std::stod(word, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != word.size() || !std::isfinite(value))
-      throw UsageError{"--" + name + ": '" + word + "' is not a finite number"};
-    values.push_back(value);
-  }
-  if (values.size() != count)
-    throw UsageError{"--" + name + " takes \"" + form + "\" (" + std::to_string(count) +
-                     " numbers)"};
-  return values;
-}
-
-}  // namespace
 
 nlohmann::json poseJson(const asr_common::Pose& pose) {
   return {
@@ -55,13 +23,13 @@ RobotState stateOption(const asr_common::cli::CommandLine& options, const std::s
                        const RobotState& fallback) {
   if (!options.has(name))
     return fallback;
-  const std::vector<double> v = numbers(options, name, 5, "x y yaw pan tilt");
+  const std::vector<double> v = options.numbers(name, 5, "x y yaw pan tilt");
   return {v[0], v[1], v[2], v[3], v[4]};
 }
 
 void poseOption(const asr_common::cli::CommandLine& options, const std::string& name,
                 Eigen::Vector3d& position, Eigen::Quaterniond& orientation) {
-  const std::vector<double> v = numbers(options, name, 7, "x y z qx qy qz qw");
+  const std::vector<double> v = options.numbers(name, 7, "x y z qx qy qz qw");
   position = {v[0], v[1], v[2]};
   orientation = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
 }

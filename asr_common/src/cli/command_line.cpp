@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 namespace asr_common::cli {
 
@@ -70,6 +71,29 @@ long long CommandLine::integer(const std::string& name, long long fallback, long
   if (errno == ERANGE || value < min || value > max)
     throw UsageError{"option --" + name + " is out of range: " + text + " is not in " + range};
   return value;
+}
+
+std::vector<double> CommandLine::numbers(const std::string& name, std::size_t count,
+                                         const std::string& form) const {
+  std::istringstream text(required(name));
+  std::vector<double> values;
+  std::string word;
+  while (text >> word) {
+    std::size_t used = 0;
+    double value = NAN;
+    try {
+      value = std::stod(word, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != word.size() || !std::isfinite(value))
+      throw UsageError{"--" + name + ": '" + word + "' is not a finite number"};
+    values.push_back(value);
+  }
+  if (values.size() != count)
+    throw UsageError{"--" + name + " takes \"" + form + "\" (" + std::to_string(count) +
+                     " numbers)"};
+  return values;
 }
 
 }  // namespace asr_common::cli

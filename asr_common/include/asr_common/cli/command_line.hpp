@@ -32,6 +32,11 @@ class CommandLine {
   /// never truncated or wrapped (the one checked integer parsing of the suite's tools).
   long long integer(const std::string& name, long long fallback, long long min,
                     long long max) const;
+  /// The required option's value as exactly `count` finite numbers separated by blanks
+  /// (`form` names them in the message, e.g. "x y yaw pan tilt"). Throws UsageError naming the
+  /// option otherwise.
+  std::vector<double> numbers(const std::string& name, std::size_t count,
+                              const std::string& form) const;
 
  private:
   std::map<std::string, std::string> values_;
