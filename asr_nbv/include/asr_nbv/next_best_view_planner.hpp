@@ -1,0 +1,86 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "asr_common/pose.hpp"
+#include "asr_ism/thread_pool.hpp"
+#include "asr_nbv/candidate_views.hpp"
+#include "asr_nbv/hypotheses.hpp"
+#include "asr_nbv/nbv_parameters.hpp"
+#include "asr_nbv/view_rating.hpp"
+#include "asr_robot_model/inverse_kinematics.hpp"
+#include "asr_robot_model/world.hpp"
+#include "asr_robot_model/world_map.hpp"
+
+namespace asr_nbv {
+
+/// The view chosen (or none: nothing left to see from anywhere the robot can go).
+struct PlannedView {
+  bool found = false;
+  asr_common::Pose camera;            // camera_optical_frame in map
+  asr_robot_model::RobotState state;  // the state that takes it (inverse kinematics)
+  std::vector<std::string> types;     // to search there
+  double utility = 0.0;               // of the searched types
+  double utility_max = 0.0;           // the best utility of the last step (normaliser)
+  double rating = 0.0;
+  InverseCosts costs;
+  double motion_seconds = 0.0;       // from the current state, by the motion model
+  std::size_t candidates_rated = 0;  // positions x orientations over all steps
+  std::size_t steps = 0;
+};
+
+/// Next-best-view search: candidate camera positions on a hexagonal lattice over the room,
+/// refined around the best view step by step; at each, the orientations of
+/// CandidateOrientations; utility per type from the hypotheses (occluded ones excluded); the
+/// types to search by bestTypeSubset; costs from inverse kinematics and the motion model. The
+/// candidates are rated in parallel on `pool`; the answer is the same for a seed whatever the
+/// number of threads.
+class NextBestViewPlanner {
+ public:
+  /// `world` gives the room; `map` free space and lines of sight (both must outlive the
+  /// planner, as must `pool`; a null pool rates on the calling thread).
+  NextBestViewPlanner(const asr_robot_model::RobotDescription& robot,
+                      const asr_robot_model::World& world, const asr_robot_model::WorldMap& map,
+                      NbvParameters parameters, asr_ism::ThreadPool* pool, unsigned seed = 0);
+
+  /// The best view from `current` (checked finite: asr_common::InputError otherwise).
+  PlannedView plan(const HypothesisSet& hypotheses,
+                   const asr_robot_model::RobotState& current) const;
+
+  const NbvParameters& parameters() const { return parameters_; }
+  const asr_robot_model::InverseKinematics& kinematics() const { return kinematics_; }
+
+ private:
+  struct Candidate;
+  struct Step;
+  Step rateStep(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
+                const asr_robot_model::RobotState& current) const;
+  void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<std::size_t>& nearby,
+                   const Eigen::Vector2d& position, std::size_t position_index,
+                   std::vector<Candidate>& candidates) const;
+  /// False if no base position within camera_reach_ of the camera's floor point (sampled on
+  /// its circle) is free: the camera cannot be carried there.
+  bool reachable(const Eigen::Vector2d& camera) const;
+  asr_common::Pose cameraOf(const Candidate& candidate,
+                            const std::vector<Eigen::Vector2d>& positions) const;
+  /// Utility per type of the hypotheses `nearby` seen from `camera`, occluded ones excluded.
+  std::vector<double> occludedUtility(const HypothesisSet& hypotheses,
+                                      const std::vector<std::size_t>& nearby,
+                                      const asr_common::Pose& camera) const;
+
+  asr_robot_model::RobotDescription robot_;
+  asr_robot_model::InverseKinematics kinematics_;
+  const asr_robot_model::World& world_;
+  const asr_robot_model::WorldMap& map_;
+  NbvParameters parameters_;
+  asr_ism::ThreadPool* pool_;
+  CandidateOrientations orientations_;
+  // Per tilt level, the slopes (rise / run) between which a hypothesis can be within the side
+  // angle of the level's axis elevation.
+  std::vector<double> band_low_, band_high_;
+  std::vector<double> level_sine_, level_cosine_;  // of each level's axis elevation
+  double camera_reach_ = 0.0;  // metres from the base's centre to the camera, on the floor
+};
+
+}  // namespace asr_nbv
