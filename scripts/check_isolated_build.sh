@@ -70,7 +70,8 @@ check_catkin_make_isolated() {
 check_shipped_files_installed() {
   local workspace="$1"
   mv "$workspace/src" "$workspace/src.moved"
-  if ! "$workspace/install_isolated/lib/asr_robot_model/robot" fk --state "0 0 0 0 0" --json \
+  if ! LD_LIBRARY_PATH="$workspace/install_isolated/lib" \
+      "$workspace/install_isolated/lib/asr_robot_model/robot" fk --state "0 0 0 0 0" --json \
       >"$WORK/shipped_files.log" 2>&1; then
     cat "$WORK/shipped_files.log" >&2
     echo "check_isolated_build: the installed robot tool does not find its shipped URDF" >&2
