@@ -63,6 +63,22 @@ check_catkin_make_isolated() {
   echo "catkin_make_isolated --install: built and installed in $((SECONDS - start)) s"
   check_install_space "$workspace/install_isolated"
   check_core_without_ros "$workspace/install_isolated"
+  check_shipped_files_installed "$workspace"
+}
+
+# The installed robot tool finds the shipped URDF in the install space once the sources are gone.
+check_shipped_files_installed() {
+  local workspace="$1"
+  mv "$workspace/src" "$workspace/src.moved"
+  if ! LD_LIBRARY_PATH="$workspace/install_isolated/lib" \
+      "$workspace/install_isolated/lib/asr_robot_model/robot" fk --state "0 0 0 0 0" --json \
+      >"$WORK/shipped_files.log" 2>&1; then
+    cat "$WORK/shipped_files.log" >&2
+    echo "check_isolated_build: the installed robot tool does not find its shipped URDF" >&2
+    exit 1
+  fi
+  mv "$workspace/src.moved" "$workspace/src"
+  echo "install space: the shipped URDF is found there without the sources"
 }
 
 # What a user of the installed suite needs is there.
@@ -82,7 +98,13 @@ check_install_space() {
     lib/asr_pose_prediction/asr_prediction_bench \
     share/asr_bringup/launch/recognize.launch share/asr_bringup/launch/learn.launch \
     share/asr_bringup/launch/replay.launch share/asr_bringup/config/scene_recognizer.yaml \
-    share/asr_common/cmake/asr_build_rules.cmake; do
+    share/asr_common/cmake/asr_build_rules.cmake \
+    lib/libasr_robot_model.so lib/libasr_robot_model_ros.so \
+    include/asr_robot_model/robot_description.hpp lib/asr_robot_model/robot \
+    lib/asr_robot_model/robot_driver lib/asr_robot_model/object_detector_sim \
+    share/asr_robot_model/launch/robot_sim.launch share/asr_robot_model/launch/robot_sim.rviz \
+    share/asr_robot_model/urdf/asr_robot.urdf share/asr_robot_model/config/object_types.yaml \
+    share/asr_robot_model/config/worlds/kitchen.yaml; do
     if [ ! -e "$install/$file" ]; then
       echo "check_isolated_build: not installed: $file" >&2
       missing=1

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "asr_common/input_error.hpp"
+#include "asr_robot_model/shipped_files.hpp"
 
 namespace asr_robot_model {
 namespace {
@@ -108,6 +109,23 @@ class ParserMessages : public console_bridge::OutputHandler {
   std::string first_error_;
 };
 
+std::vector<UrdfJoint> allJoints(const urdf::ModelInterface& model) {
+  std::vector<UrdfJoint> joints;
+  for (const auto& [name, joint] : model.joints_) {
+    UrdfJoint entry;
+    entry.name = name;
+    entry.parent = joint->parent_link_name;
+    entry.child = joint->child_link_name;
+    entry.origin = toIsometry(joint->parent_to_joint_origin_transform);
+    entry.moves = joint->type == urdf::Joint::REVOLUTE || joint->type == urdf::Joint::CONTINUOUS;
+    const Eigen::Vector3d axis(joint->axis.x, joint->axis.y, joint->axis.z);
+    if (entry.moves && axis.allFinite() && axis.norm() > 1e-9)
+      entry.axis = axis.normalized();
+    joints.push_back(entry);
+  }
+  return joints;
+}
+
 urdf::ModelInterfaceSharedPtr parsedModel(const std::string& urdf_xml, const std::string& source) {
   ParserMessages messages;
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
@@ -155,6 +173,7 @@ RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::s
     fail(source, std::string("joint '") + kPanJoint + "' axis",
          "must be vertical in base_footprint");
   robot.base_radius = cylinderRadius(*model, source);
+  robot.joints = allJoints(*model);
   return robot;
 }
 
@@ -167,7 +186,7 @@ RobotDescription loadRobotDescription(const std::string& urdf_path) {
 }
 
 std::string defaultRobotUrdf() {
-  return ASR_ROBOT_MODEL_URDF_DIR "/asr_robot.urdf";
+  return shippedFile("urdf/asr_robot.urdf");
 }
 
 }  // namespace asr_robot_model

@@ -4,6 +4,7 @@
 
 #include "asr_common/input_error.hpp"
 #include "asr_robot_model/document.hpp"
+#include "asr_robot_model/shipped_files.hpp"
 
 namespace asr_robot_model {
 namespace {
@@ -117,7 +118,7 @@ ObjectCatalogue loadObjectCatalogue(const std::string& path) {
 }
 
 std::string defaultObjectCatalogue() {
-  return ASR_ROBOT_MODEL_CONFIG_DIR "/object_types.yaml";
+  return shippedFile("config/object_types.yaml");
 }
 
 World loadWorld(const std::string& path, const ObjectCatalogue& catalogue) {

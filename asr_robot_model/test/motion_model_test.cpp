@@ -9,6 +9,16 @@
 
 using namespace asr_robot_model;
 
+namespace {
+
+// A state with every value uniform in [-range, range].
+RobotState randomState(std::mt19937& random, double range) {
+  std::uniform_real_distribution<double> value(-range, range);
+  return {value(random), value(random), value(random), value(random), value(random)};
+}
+
+}  // namespace
+
 TEST(MotionModel, DrivingStraightAheadTakesDistanceOverSpeed) {
   const Motion motion = motionBetween({0, 0, 0, 0, 0}, {1, 0, 0, 0, 0}, MotionSpeeds{});
   EXPECT_DOUBLE_EQ(motion.seconds, 2.0);
@@ -43,11 +53,10 @@ TEST(MotionModel, HeadMovesWhileTheBaseMovesAndTheSlowerSetsTheTime) {
 
 TEST(MotionModel, PropertiesOverRandomStates) {
   std::mt19937 random(3);
-  std::uniform_real_distribution<double> value(-4.0, 4.0);
   const MotionSpeeds speeds;
   for (int i = 0; i < 10000; ++i) {
-    const RobotState a{value(random), value(random), value(random), value(random), value(random)};
-    const RobotState b{value(random), value(random), value(random), value(random), value(random)};
+    const RobotState a = randomState(random, 4.0);
+    const RobotState b = randomState(random, 4.0);
     const Motion motion = motionBetween(a, b, speeds);
     EXPECT_NEAR(motion.path_length, std::hypot(b.x - a.x, b.y - a.y), 1e-12);
     EXPECT_LE(motion.turning, 2 * M_PI + 1e-12);
@@ -70,4 +79,50 @@ TEST(MotionModel, SpeedsComeFromTheUrdfAndBadSpeedsAreNamed) {
   bad.turn_speed = 0.0;
   const std::string message = asr_common::testing::inputErrorOf([&] { checkSpeeds(bad); });
   EXPECT_NE(message.find("turn_speed"), std::string::npos) << message;
+}
+
+TEST(MotionModel, StateAlongTurnsThenDrivesThenTurns) {
+  const MotionSpeeds speeds;  // turn 0.8 rad/s, drive 0.5 m/s
+  const RobotState from{0, 0, 0, 0, 0};
+  const RobotState to{0, 1, 0, 0.5, 0};
+  const double quarter = (M_PI / 2) / 0.8;
+  const RobotState turning = stateAlong(from, to, speeds, quarter / 2);
+  EXPECT_NEAR(turning.yaw, M_PI / 4, 1e-12);
+  EXPECT_DOUBLE_EQ(turning.x, 0.0);
+  const RobotState driving = stateAlong(from, to, speeds, quarter + 1.0);
+  EXPECT_NEAR(driving.y, 0.5, 1e-12);
+  EXPECT_NEAR(driving.yaw, M_PI / 2, 1e-12);
+  EXPECT_DOUBLE_EQ(driving.pan, 0.5);  // the head arrived after 0.5 s
+  const RobotState back = stateAlong(from, to, speeds, quarter + 2.0 + quarter / 2);
+  EXPECT_NEAR(back.y, 1.0, 1e-12);
+  EXPECT_NEAR(back.yaw, M_PI / 4, 1e-12);
+}
+
+// Along any motion the robot starts at `from`, ends at `to` exactly at the motion's seconds and
+// never moves faster than its speeds between two instants.
+TEST(MotionModel, StateAlongIsContinuousWithinTheSpeedsOverRandomMotions) {
+  std::mt19937 random(5);
+  const MotionSpeeds speeds;
+  for (int i = 0; i < 500; ++i) {
+    const RobotState a = randomState(random, 3.0);
+    const RobotState b = randomState(random, 3.0);
+    const double seconds = motionBetween(a, b, speeds).seconds;
+    const RobotState start = stateAlong(a, b, speeds, 0.0);
+    EXPECT_NEAR(start.x, a.x, 1e-12);
+    EXPECT_NEAR(wrapAngle(start.yaw - a.yaw), 0.0, 1e-12);
+    const RobotState end = stateAlong(a, b, speeds, seconds);
+    EXPECT_EQ(end.x, b.x);
+    EXPECT_EQ(end.yaw, b.yaw);
+    const double step = seconds / 50;
+    RobotState previous = start;
+    for (int k = 1; k <= 50; ++k) {
+      const RobotState now = stateAlong(a, b, speeds, k * step);
+      EXPECT_LE(std::hypot(now.x - previous.x, now.y - previous.y),
+                speeds.base_speed * step + 1e-9);
+      EXPECT_LE(std::abs(wrapAngle(now.yaw - previous.yaw)), speeds.turn_speed * step + 1e-9);
+      EXPECT_LE(std::abs(now.pan - previous.pan), speeds.pan_speed * step + 1e-9);
+      EXPECT_LE(std::abs(now.tilt - previous.tilt), speeds.tilt_speed * step + 1e-9);
+      previous = now;
+    }
+  }
 }

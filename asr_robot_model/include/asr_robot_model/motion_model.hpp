@@ -37,4 +37,10 @@ inline constexpr double kMinDrive = 1e-6;
 /// modulo 2 pi, each turn the short way round).
 Motion motionBetween(const RobotState& from, const RobotState& to, const MotionSpeeds& speeds);
 
+/// Where the robot is `seconds` into the motion from `from` to `to` (the motion motionBetween
+/// times): the base in its first turn, its drive or its last turn, each joint of the head moving
+/// at its speed until it arrives. Before 0 it is `from`, from the motion's end on it is `to`.
+RobotState stateAlong(const RobotState& from, const RobotState& to, const MotionSpeeds& speeds,
+                      double seconds);
+
 }  // namespace asr_robot_model

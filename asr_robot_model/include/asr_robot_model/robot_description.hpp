@@ -17,6 +17,17 @@ struct RevoluteJoint {
   bool withinLimits(double angle) const { return angle >= lower && angle <= upper; }
 };
 
+/// A joint of the URDF between two frames, for publishing the robot's frames (tf): its fixed
+/// origin in the parent link and, for a joint that moves, its unit axis.
+struct UrdfJoint {
+  std::string name;
+  std::string parent;
+  std::string child;
+  Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
+  bool moves = false;  // revolute or continuous (other moving joints are held at zero)
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+};
+
 /// The kinematic chain from base_footprint to camera_optical_frame, read from a URDF:
 ///   base_footprint * base_to_pan * Rot(pan.axis, pan) * pan_to_tilt * Rot(tilt.axis, tilt)
 ///     * tilt_to_camera = camera_optical_frame
@@ -30,6 +41,7 @@ struct RobotDescription {
   RevoluteJoint pan;
   RevoluteJoint tilt;
   double base_radius = 0.0;
+  std::vector<UrdfJoint> joints;  // every joint of the URDF, by name
 };
 
 /// Frame and joint names the suite's robots must use (REP 103/105).
@@ -49,8 +61,7 @@ RobotDescription loadRobotDescription(const std::string& urdf_path);
 /// The same from URDF text; `source` names it in messages.
 RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::string& source);
 
-/// The shipped robot's URDF (asr_robot_model/urdf/asr_robot.urdf), as found from the
-/// package's source folder at build time.
+/// The shipped robot's URDF (asr_robot_model/urdf/asr_robot.urdf; see shippedFile).
 std::string defaultRobotUrdf();
 
 }  // namespace asr_robot_model

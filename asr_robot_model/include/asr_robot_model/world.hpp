@@ -57,7 +57,7 @@ struct World {
 /// asr_common::InputError naming the file and the field if it is malformed.
 ObjectCatalogue loadObjectCatalogue(const std::string& path);
 
-/// The shipped catalogue (asr_robot_model/config/object_types.yaml).
+/// The shipped catalogue (asr_robot_model/config/object_types.yaml; see shippedFile).
 std::string defaultObjectCatalogue();
 
 /// Reads a world file (YAML or JSON). Objects without a size or normals take those of their
