@@ -13,7 +13,7 @@
 #include "asr_common/testing/rostest_support.hpp"
 #include "asr_robot_model/detection_simulator.hpp"
 #include "asr_robot_model/forward_kinematics.hpp"
-#include "asr_robot_model/testing/simulation_probe.hpp"
+#include "simulation_probe.hpp"
 
 namespace asr_robot_model {
 namespace {
