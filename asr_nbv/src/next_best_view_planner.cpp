@@ -109,7 +109,10 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
       map_(map),
       parameters_(std::move(parameters)),
       pool_(pool),
-      orientations_(robot, parameters_.orientation_step, seed) {
+      orientations_(robot, parameters_.orientation_step, seed),
+      orientation_bound_(parameters_.rating_angle),
+      side_bound_(std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0),
+      proximity_bound_((parameters_.frustum.far() - parameters_.frustum.near()) / 2.0) {
   checkNbvParameters(parameters_);
   const double side_angle = std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0;
   for (const TiltLevel& level : orientations_.levels()) {
@@ -128,6 +131,20 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
   camera_reach_ += 0.01;  // the pan samples' margin
 }
 
+double NextBestViewPlanner::orientationBound(const Hypothesis& hypothesis,
+                                             const Eigen::Vector3d& offset, double distance) const {
+  if (hypothesis.normals.empty())
+    return hypothesis.active[0] ? 1.0 : 0.0;
+  // The camera is at -offset from the hypothesis.
+  double best = 0.0;
+  for (std::size_t n = 0; n < hypothesis.normals.size(); ++n) {
+    if (hypothesis.active[n])
+      best = std::max(best,
+                      orientation_bound_.ofCosine(-hypothesis.normals[n].dot(offset) / distance));
+  }
+  return best;
+}
+
 void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
                                       const std::vector<std::size_t>& nearby,
                                       const Eigen::Vector2d& position, std::size_t position_index,
@@ -136,6 +153,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   const double side_angle = std::min(frustum.fovx(), frustum.fovy()) / 2.0;
   const double side_cosine = std::cos(side_angle);
   const double reach = frustum.far() / side_cosine;
+  const double middle = (frustum.near() + frustum.far()) / 2.0;
   const std::size_t type_count = hypotheses.types().size();
   const std::vector<TiltLevel>& levels = orientations_.levels();
   thread_local std::vector<double> utility;  // orientation x type
@@ -160,7 +178,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
       const double distance = offset.norm();
       if (distance <= frustum.near() || distance >= reach)
         continue;
-      const double orientation = orientationUtility(hypothesis, camera, parameters_.rating_angle);
+      const double orientation = orientationBound(hypothesis, offset, distance);
       if (orientation == 0.0)
         continue;
       const auto [first, count] =
@@ -170,7 +188,12 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
       for (long h = first; h < first + count; ++h) {
         const std::size_t o = level.first_orientation +
                               static_cast<std::size_t>(((h % headings) + headings) % headings);
-        const double terms = sideProximity(orientations_.axis(o), offset, frustum);
+        // Bounds of sideProximity's terms, as the orientation's above.
+        const double depth = orientations_.axis(o).dot(offset);
+        if (depth <= side_cosine * distance)
+          continue;
+        const double terms = proximity_bound_.ofDistance(std::abs(depth - middle)) *
+                             side_bound_.ofCosine(depth / distance);
         if (terms > 0.0) {
           utility[o * type_count + hypothesis.type] += orientation * terms;
           touched[o] = 1;
@@ -324,6 +347,7 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
     const InverseCosts costs = inverseCosts(motion, current, ik.state, robot_, choice.types.size(),
                                             type_count, parameters_);
     const double value = rating(choice.utility, utility_max, costs, weights);
+    step.view.rated.push_back({ik.camera, value});
     if (value > best_rating) {
       best_rating = value;
       PlannedView& view = step.view;
@@ -367,6 +391,7 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
   double reach = (high - low).norm();
   double scale = 1.0, previous_rating = 0.0;
   std::size_t rated = 0;
+  std::vector<RatedCandidate> rated_views;
   for (int k = 0; k < parameters_.max_steps; ++k) {
     const double radius = std::pow(scale, 0.382) * parameters_.lattice_radius;
     std::vector<Eigen::Vector2d> positions = hexagonalLattice(centre, radius, reach, low, high);
@@ -379,6 +404,7 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
     Step step = rateStep(hypotheses, positions, current);
     if (!step.found)
       break;
+    rated_views.insert(rated_views.end(), step.view.rated.begin(), step.view.rated.end());
     result = step.view;
     result.steps = static_cast<std::size_t>(k) + 1;
     if (k > 0 && std::abs(step.view.rating - previous_rating) <= parameters_.rating_epsilon)
@@ -390,7 +416,60 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
     scale /= 2.0;
   }
   result.candidates_rated = rated;
+  result.rated = std::move(rated_views);
   return result;
+}
+
+RatedViews NextBestViewPlanner::rateViews(const HypothesisSet& hypotheses,
+                                          const std::vector<VisitedView>& views,
+                                          const RobotState& current) const {
+  asr_robot_model::checkFinite(current, "current robot state");
+  std::vector<ViewUtility> utilities;
+  RatedViews rated;
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const asr_common::Pose& camera = views[v].camera;
+    asr_common::validatedPose(camera.position, camera.orientation,
+                              "view " + std::to_string(v) + " camera");
+    utilities.push_back(viewUtility(camera, hypotheses, parameters_, &map_));
+    rated.utility_max = std::max(rated.utility_max, utilities.back().total);
+  }
+  const std::size_t type_count = hypotheses.countingTypes();
+  const asr_robot_model::BaseIsFree base_is_free = [this](double x, double y, double) {
+    return map_.baseIsFree(x, y);
+  };
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const VisitedView& given = views[v];
+    RatedView view;
+    if (given.types.empty()) {
+      const TypeChoice choice =
+          bestTypeSubset(utilities[v].per_type, rated.utility_max, type_count, parameters_.weights);
+      for (int type : choice.types)
+        view.types.push_back(hypotheses.types()[type]);
+      view.utility = choice.utility;
+    } else {
+      view.types = given.types;
+      for (const std::string& name : given.types) {
+        const int type = hypotheses.typeIndex(name);
+        view.utility += type >= 0 ? utilities[v].per_type[type] : 0.0;
+      }
+    }
+    const asr_robot_model::IkResult ik =
+        kinematics_.solve(given.camera.position, given.camera.orientation, current, base_is_free);
+    view.reachable = ik.reachable;
+    view.refusal = ik.explanation;
+    view.camera = ik.reachable ? ik.camera : given.camera;
+    if (ik.reachable) {
+      const asr_robot_model::Motion motion =
+          asr_robot_model::motionBetween(current, ik.state, kinematics_.speeds());
+      view.state = ik.state;
+      view.costs = inverseCosts(motion, current, ik.state, robot_, view.types.size(),
+                                std::max(type_count, view.types.size()), parameters_);
+      view.motion_seconds = motion.seconds;
+      view.rating = rating(view.utility, rated.utility_max, view.costs, parameters_.weights);
+    }
+    rated.views.push_back(std::move(view));
+  }
+  return rated;
 }
 
 }  // namespace asr_nbv
