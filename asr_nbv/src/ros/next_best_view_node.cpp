@@ -123,7 +123,7 @@ bool NextBestViewNode::updateHypotheses(asr_msgs::UpdateNbvHypotheses::Request& 
     response.deactivated_normals = static_cast<std::uint32_t>(
         updateAfterView(hypotheses_, view.camera, view.types, planner_->parameters(), map_.get()));
     response.counting = static_cast<std::uint32_t>(hypotheses_.countingHypotheses());
-    last_plan_.reset();
+    // The last plan stays on display: what the view just taken has deactivated shows in it.
     publishMarkers();
   });
 }

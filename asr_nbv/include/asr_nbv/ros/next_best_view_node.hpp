@@ -45,7 +45,7 @@ class NextBestViewNode {
                      asr_msgs::RemoveNbvObjects::Response& response);
   bool resetHypotheses(asr_msgs::ResetNbvHypotheses::Request& request,
                        asr_msgs::ResetNbvHypotheses::Response& response);
-  /// The hypotheses, and the last plan while they have not changed since.
+  /// The hypotheses, and the last plan until hypotheses are set, removed or reset.
   void publishMarkers();
 
   std::string fixed_frame_;
