@@ -72,6 +72,21 @@ class HypothesisGrid {
   std::map<std::pair<long, long>, std::vector<std::size_t>> cells_;
 };
 
+// acos(q) rounded up to the table's resolution (never below it), for the heading windows: a
+// window a little wider than needed only rates a few headings more, which the depth test
+// rejects exactly.
+double arcCosineUpperBound(double q) {
+  constexpr int kEntries = 4096;
+  static const std::vector<double> table = [] {
+    std::vector<double> values(kEntries + 1);
+    for (int i = 0; i <= kEntries; ++i)
+      values[i] = std::acos(std::clamp(-1.0 + 2.0 * i / kEntries, -1.0, 1.0)) + 1e-9;
+    return values;
+  }();
+  const double index = (q + 1.0) * (kEntries / 2.0);
+  return table[std::clamp(static_cast<int>(index), 0, kEntries)];
+}
+
 // Headings of a level whose axis lies within an angle (its cosine `cosine`) of a direction
 // with this elevation (its sine and cosine) and azimuth: [first, first + count) modulo the
 // level's headings. From cos(angle) = sin e1 sin e2 + cos e1 cos e2 cos(azimuth difference).
@@ -87,7 +102,7 @@ std::pair<long, long> headingWindow(const TiltLevel& level, double level_sine, d
     return {0, 0};
   if (q <= -1.0)
     return {0, all};
-  const double spread = std::acos(q) / level.heading_step;
+  const double spread = arcCosineUpperBound(q) / level.heading_step;
   const double centre = (azimuth - level.first_heading) / level.heading_step;
   const long first = static_cast<long>(std::floor(centre - spread));
   const long last = static_cast<long>(std::ceil(centre + spread));
@@ -230,12 +245,19 @@ asr_common::Pose NextBestViewPlanner::cameraOf(
 
 std::vector<double> NextBestViewPlanner::occludedUtility(const HypothesisSet& hypotheses,
                                                          const std::vector<std::size_t>& nearby,
-                                                         const asr_common::Pose& camera) const {
+                                                         const asr_common::Pose& camera,
+                                                         std::vector<signed char>& sight) const {
   std::vector<double> per_type(hypotheses.types().size(), 0.0);
-  for (std::size_t index : nearby) {
-    const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
+  if (sight.empty())
+    sight.assign(nearby.size(), -1);
+  for (std::size_t k = 0; k < nearby.size(); ++k) {
+    const Hypothesis& hypothesis = hypotheses.hypotheses()[nearby[k]];
     const double u = hypothesisUtility(camera, hypothesis, parameters_);
-    if (u > 0.0 && map_.lineOfSight(camera.position, hypothesis.box))
+    if (u <= 0.0)
+      continue;
+    if (sight[k] < 0)
+      sight[k] = map_.lineOfSight(camera.position, hypothesis.box) ? 1 : 0;
+    if (sight[k] == 1)
       per_type[hypothesis.type] += u;
   }
   return per_type;
@@ -272,10 +294,16 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   // sight is checked only for the candidates whose bound can still win, best bound first.
   std::vector<std::vector<double>> exact(candidates.size());
   std::vector<double> exact_total(candidates.size(), -1.0);
+  // Lines of sight from a camera position (lattice point and tilt level's height) to its nearby
+  // hypotheses, cast once for all the orientations rated there.
+  const std::size_t level_count = orientations_.levels().size();
+  std::vector<std::vector<signed char>> sight(positions.size() * level_count);
   auto exactUtility = [&](std::size_t c) {
     if (exact_total[c] < 0.0) {
-      exact[c] = occludedUtility(hypotheses, nearby[candidates[c].position],
-                                 cameraOf(candidates[c], positions));
+      const Candidate& candidate = candidates[c];
+      exact[c] = occludedUtility(
+          hypotheses, nearby[candidate.position], cameraOf(candidate, positions),
+          sight[candidate.position * level_count + orientations_.levelOf(candidate.orientation)]);
       exact_total[c] = std::accumulate(exact[c].begin(), exact[c].end(), 0.0);
     }
     return exact_total[c];

@@ -102,9 +102,12 @@ class NextBestViewPlanner {
   asr_common::Pose cameraOf(const Candidate& candidate,
                             const std::vector<Eigen::Vector2d>& positions) const;
   /// Utility per type of the hypotheses `nearby` seen from `camera`, occluded ones excluded.
+  /// `sight`: lines of sight from this camera position to `nearby` (1 free, 0 blocked, -1 not
+  /// yet cast; empty: none cast), filled as they are cast.
   std::vector<double> occludedUtility(const HypothesisSet& hypotheses,
                                       const std::vector<std::size_t>& nearby,
-                                      const asr_common::Pose& camera) const;
+                                      const asr_common::Pose& camera,
+                                      std::vector<signed char>& sight) const;
 
   asr_robot_model::RobotDescription robot_;
   asr_robot_model::InverseKinematics kinematics_;
