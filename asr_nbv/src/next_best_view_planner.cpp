@@ -161,6 +161,7 @@ double NextBestViewPlanner::orientationBound(const Hypothesis& hypothesis,
 }
 
 void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
+                                      const std::vector<Eigen::Vector3d>& points,
                                       const std::vector<std::size_t>& nearby,
                                       const Eigen::Vector2d& position, std::size_t position_index,
                                       std::vector<Candidate>& candidates) const {
@@ -176,11 +177,10 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   utility.assign(orientations_.size() * type_count, 0.0);
   touched.assign(orientations_.size(), 0);
   for (std::size_t index : nearby) {
-    const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
-    const Eigen::Vector3d& point = hypothesis.box.pose.position;
+    const Eigen::Vector3d& point = points[index];
     const Eigen::Vector2d across = point.head<2>() - position;
     const double horizontal = across.norm();
-    const double azimuth = std::atan2(across.y(), across.x());
+    double azimuth = std::numeric_limits<double>::quiet_NaN();  // when a level needs it
     for (std::size_t l = 0; l < levels.size(); ++l) {
       const TiltLevel& level = levels[l];
       // Only levels whose axis elevation lies within the side angle of the hypothesis' can see
@@ -193,24 +193,29 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
       const double distance = offset.norm();
       if (distance <= frustum.near() || distance >= reach)
         continue;
+      const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
       const double orientation = orientationBound(hypothesis, offset, distance);
       if (orientation == 0.0)
         continue;
+      if (std::isnan(azimuth))
+        azimuth = std::atan2(across.y(), across.x());
+      const double inverse_distance = 1.0 / distance;
       const auto [first, count] =
-          headingWindow(level, level_sine_[l], level_cosine_[l], rise / distance,
-                        horizontal / distance, azimuth, side_cosine);
+          headingWindow(level, level_sine_[l], level_cosine_[l], rise * inverse_distance,
+                        horizontal * inverse_distance, azimuth, side_cosine);
       const long headings = static_cast<long>(level.headings);
-      for (long h = first; h < first + count; ++h) {
-        const std::size_t o = level.first_orientation +
-                              static_cast<std::size_t>(((h % headings) + headings) % headings);
+      long h = ((first % headings) + headings) % headings;
+      double* const row = utility.data() + hypothesis.type;
+      for (long k = 0; k < count; ++k, h = (h + 1 == headings) ? 0 : h + 1) {
+        const std::size_t o = level.first_orientation + static_cast<std::size_t>(h);
         // Bounds of sideProximity's terms, as the orientation's above.
         const double depth = orientations_.axis(o).dot(offset);
         if (depth <= side_cosine * distance)
           continue;
         const double terms = proximity_bound_.ofDistance(std::abs(depth - middle)) *
-                             side_bound_.ofCosine(depth / distance);
+                             side_bound_.ofCosine(depth * inverse_distance);
         if (terms > 0.0) {
-          utility[o * type_count + hypothesis.type] += orientation * terms;
+          row[o * type_count] += orientation * terms;
           touched[o] = 1;
         }
       }
@@ -269,12 +274,17 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
   const double reach = frustum.far() / std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
   const HypothesisGrid grid(hypotheses, reach);
+  // The positions packed, for the first pass's sweep over them.
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(hypotheses.hypotheses().size());
+  for (const Hypothesis& hypothesis : hypotheses.hypotheses())
+    points.push_back(hypothesis.box.pose.position);
   std::vector<std::vector<std::size_t>> nearby(positions.size());
   std::vector<std::vector<Candidate>> per_position(positions.size());
   auto rate_position = [&](std::size_t p) {
     nearby[p] = grid.near(hypotheses, positions[p], reach);
     if (!nearby[p].empty())
-      utilitiesAt(hypotheses, nearby[p], positions[p], p, per_position[p]);
+      utilitiesAt(hypotheses, points, nearby[p], positions[p], p, per_position[p]);
   };
   if (pool_ != nullptr)
     pool_->parallelFor(positions.size(), rate_position);

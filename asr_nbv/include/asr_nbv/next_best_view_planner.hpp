@@ -89,9 +89,10 @@ class NextBestViewPlanner {
   struct Step;
   Step rateStep(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
                 const asr_robot_model::RobotState& current) const;
-  void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<std::size_t>& nearby,
-                   const Eigen::Vector2d& position, std::size_t position_index,
-                   std::vector<Candidate>& candidates) const;
+  /// `points`: the hypotheses' positions, as hypotheses.hypotheses() holds them.
+  void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector3d>& points,
+                   const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
+                   std::size_t position_index, std::vector<Candidate>& candidates) const;
   /// >= orientationUtility of the hypothesis seen from the camera at `offset` from it
   /// (`distance` its length), by table look-up.
   double orientationBound(const Hypothesis& hypothesis, const Eigen::Vector3d& offset,
