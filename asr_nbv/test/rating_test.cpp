@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 
+#include "asr_nbv/raised_cosine_bound.hpp"
 #include "asr_nbv/testing/nbv_scenes.hpp"
 #include "asr_nbv/view_rating.hpp"
 
@@ -46,6 +47,26 @@ TEST(RaisedCosine, OneAtZeroFallingToZeroAtTheThreshold) {
   EXPECT_EQ(raisedCosine(2.0, 1.0), 0.0);
   for (double d = 0.0; d < 1.0; d += 0.01)
     EXPECT_GE(raisedCosine(d, 1.0), raisedCosine(d + 0.01, 1.0));
+}
+
+TEST(RaisedCosine, TableBoundsAreNeverBelowTheExactValueAndClose) {
+  // The planner's first pass relies on these being upper bounds: random distances and angles
+  // over and beyond the thresholds of the shipped parameters.
+  std::mt19937 random(5);
+  for (const double threshold : {0.55, 10.0 * M_PI / 180.0, M_PI / 4.0, M_PI}) {
+    const RaisedCosineBound bound(threshold);
+    std::uniform_real_distribution<double> distance(0.0, 1.5 * threshold), angle(0.0, M_PI);
+    for (int i = 0; i < 20000; ++i) {
+      const double d = distance(random), a = angle(random);
+      const double exact_d = raisedCosine(d, threshold), exact_a = raisedCosine(a, threshold);
+      ASSERT_GE(bound.ofDistance(d), exact_d) << d;
+      ASSERT_LE(bound.ofDistance(d), exact_d + 0.01) << d;
+      ASSERT_GE(bound.ofCosine(std::cos(a)), exact_a) << a;
+      ASSERT_LE(bound.ofCosine(std::cos(a)), exact_a + 0.01) << a;
+    }
+    EXPECT_GE(bound.ofCosine(1.0), 1.0);
+    EXPECT_EQ(bound.ofDistance(2.0 * threshold), 0.0);
+  }
 }
 
 TEST(ViewRating, HypothesisFacingTheCameraCentredAtMiddleDistanceHasUtilityOne) {
