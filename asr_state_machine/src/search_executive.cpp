@@ -142,10 +142,9 @@ SearchExecutive::State SearchExecutive::directSearch() {
   const std::vector<std::string> types = result_.world.missingTypes();
   if (types.empty())
     return finish(Outcome::kFoundAllObjects, "");
-  const auto start = Clock::now();
+  // The direct search's views are precomputed: choosing one is no decision of the executive.
   const std::optional<SearchView> view =
       parts_.direct_search.next(parts_.robot.state(), types, result_.world.visitedViews());
-  decided(secondsSince(start));
   if (!view) {
     return finish(Outcome::kNowhereLeftToSearch, "no direct-search view is left");
   }

@@ -50,7 +50,8 @@ struct SearchResult {
   std::string reason;
   double sim_seconds = 0.0;
   double compute_seconds = 0.0;  // recognition + prediction + next-best-view, measured
-  std::vector<double> decision_compute_seconds;  // per decision (a state that computed)
+  /// Per decision of recognition, prediction or next-best-view (what compute_seconds sums).
+  std::vector<double> decision_compute_seconds;
   WorldModel world;
   std::vector<LogEntry> log;
 };
