@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "asr_common/atomic_file.hpp"
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/command_main.hpp"
 #include "asr_common/cli/recordings_folder.hpp"
@@ -21,12 +22,17 @@ using namespace asr_state_machine;
 using asr_common::cli::CommandLine;
 using asr_common::cli::median;
 
+// Recorded sets that place the scenes, one after another over the seeds.
+constexpr std::size_t kPlacements = 5;
+
 const char* const kUsage =
     "usage: asr bench search [--seeds N] [--world W] [--models M] [--recordings DIR] [--json]\n"
     "  Direct search only, bounding-box search and Active Scene Recognition on the kitchen\n"
-    "  (asr_state_machine/config/worlds/kitchen.yaml; its models learned from the recordings\n"
-    "  unless --models is given), over N seeds (default 10): each seed changes the detection\n"
-    "  noise and the robot's start (up to 0.3 m, 0.9 rad). A table of simulated minutes,\n"
+    "  over N seeds (default 10): each seed changes the detection noise, the robot's start (up\n"
+    "  to 0.3 m, 0.9 rad) and which of the last 5 complete recorded sets places each scene\n"
+    "  (the models are learned without it); --world and --models fix world and models\n"
+    "  (--world defaults to asr_state_machine/config/worlds/kitchen.yaml). A table of simulated "
+    "minutes,\n"
     "  views and objects found beside the paper's figures, and the targets.\n";
 
 struct ModeRuns {
@@ -47,20 +53,30 @@ std::string range(const std::vector<double>& values, int digits) {
 int run(const std::vector<std::string>& arguments) {
   const CommandLine options(arguments, {"seeds", "world", "models", "recordings"}, {"json"});
   const int seeds = static_cast<int>(options.integer("seeds", 10, 1, 1000));
-  const std::string world = options.optional(
-      "world", std::string(ASR_STATE_MACHINE_SOURCE_DIR) + "/config/worlds/kitchen.yaml");
-  std::string models = options.optional("models", "");
   const std::string folder =
       (std::filesystem::temp_directory_path() / ("asr_bench_search_" + std::to_string(getpid())))
           .string();
-  if (models.empty()) {
+  // Per placement (which held-out recorded set places the scenes), a world and the models
+  // learned without that set; or the given world and models for every seed.
+  std::vector<std::string> worlds, models;
+  if (options.has("models") || options.has("world")) {
+    worlds = {options.optional(
+        "world", std::string(ASR_STATE_MACHINE_SOURCE_DIR) + "/config/worlds/kitchen.yaml")};
+    models = {options.required("models")};
+  } else {
     const auto recordings = asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR,
                                                                  "asr bench search", std::cerr);
     if (!recordings)
       return 0;
     std::filesystem::create_directories(folder);
-    models = folder + "/kitchen_models.sqlite";
-    kitchen::learnKitchenModels(*recordings, models);
+    for (std::size_t placement = 0; placement < kPlacements; ++placement) {
+      const std::string suffix = std::to_string(placement);
+      models.push_back(folder + "/kitchen_models_" + suffix + ".sqlite");
+      kitchen::learnKitchenModels(*recordings, models.back(), placement);
+      worlds.push_back(folder + "/kitchen_" + suffix + ".yaml");
+      asr_common::writeFileAtomically(worlds.back(),
+                                      kitchen::kitchenWorldYaml(*recordings, placement));
+    }
   }
 
   // The paper's simulation: minutes until all objects were found.
@@ -71,8 +87,8 @@ int run(const std::vector<std::string>& arguments) {
   for (ModeRuns& mode : runs) {
     for (int seed = 0; seed < seeds; ++seed) {
       SearchRequest request;
-      request.world = world;
-      request.model_files = {models};
+      request.world = worlds[seed % worlds.size()];
+      request.model_files = {models[seed % models.size()]};
       request.config.mode = mode.mode;
       request.config.seed = static_cast<std::uint32_t>(seed);
       request.config.max_sim_seconds = 3 * 3600.0;

@@ -117,15 +117,18 @@ FurniturePredictor::FurniturePredictor(const asr_robot_model::World& world, doub
 std::vector<PredictedCloud> FurniturePredictor::predict(const std::vector<SceneInstance>&,
                                                         const std::vector<ObjectKey>& missing,
                                                         std::uint32_t seed) {
+  // Without scene knowledge an object may stand in any orientation: uniform random rotations
+  // (normalised Gaussian 4-vectors), so that its recognisable sides point every way.
   std::mt19937 random(seed);
-  std::uniform_real_distribution<double> yaw(-M_PI, M_PI);
+  std::normal_distribution<double> gaussian(0.0, 1.0);
   std::vector<PredictedCloud> clouds;
   for (const ObjectKey& key : missing) {
     PredictedCloud cloud;
     cloud.key = key;
     for (const Eigen::Vector3d& point : points_) {
-      cloud.poses.emplace_back(
-          point, Eigen::Quaterniond(Eigen::AngleAxisd(yaw(random), Eigen::Vector3d::UnitZ())));
+      const Eigen::Quaterniond rotation(gaussian(random), gaussian(random), gaussian(random),
+                                        gaussian(random));
+      cloud.poses.emplace_back(point, asr_common::canonicalQuaternion(rotation));
     }
     clouds.push_back(std::move(cloud));
   }

@@ -77,13 +77,17 @@ std::vector<KitchenScene> kitchenScenes() {
           {"story_2.sqlite", "Muesli_Regal"}};
 }
 
-std::size_t heldOutStep(const asr_ism::Demonstration& demonstration) {
+std::size_t heldOutStep(const asr_ism::Demonstration& demonstration, std::size_t placement) {
+  std::size_t complete = 0;
   for (std::size_t step = demonstration.stepCount(); step-- > 0;) {
-    if (demonstration.configuration(step).size() == demonstration.objectCount())
+    if (demonstration.configuration(step).size() != demonstration.objectCount())
+      continue;
+    if (complete++ == placement)
       return step;
   }
-  throw asr_common::InputError("scene '" + demonstration.scene() +
-                               "' has no step in which every object was observed");
+  throw asr_common::InputError(
+      "scene '" + demonstration.scene() + "' has " + std::to_string(complete) +
+      " steps in which every object was observed, not " + std::to_string(placement + 1));
 }
 
 asr_ism::Demonstration withoutStep(const asr_ism::Demonstration& demonstration, std::size_t step) {
@@ -101,12 +105,12 @@ asr_ism::Demonstration withoutStep(const asr_ism::Demonstration& demonstration, 
 }
 
 std::vector<std::string> learnKitchenModels(const std::string& recordings,
-                                            const std::string& model_path) {
+                                            const std::string& model_path, std::size_t placement) {
   std::vector<std::string> lines;
   for (const KitchenScene& scene : kitchenScenes()) {
     const std::string file = recordingPath(recordings, scene);
     const asr_ism::Demonstration all = asr_ism::sqlite::readDemonstration(file, scene.scene);
-    const std::size_t held_out = heldOutStep(all);
+    const std::size_t held_out = heldOutStep(all, placement);
     const asr_ism::Demonstration training = withoutStep(all, held_out);
     const auto topology = asr_ism_tree::RelationTopology::star(
         training.objects(), asr_ism_tree::chooseStarCenter(training));
@@ -122,7 +126,7 @@ std::vector<std::string> learnKitchenModels(const std::string& recordings,
   return lines;
 }
 
-std::string kitchenWorldYaml(const std::string& recordings) {
+std::string kitchenWorldYaml(const std::string& recordings, std::size_t placement) {
   std::ostringstream yaml;
   yaml << "# The search's kitchen, written by learn_kitchen_models (asr_state_machine/src/"
           "kitchen.cpp):\n"
@@ -143,8 +147,9 @@ std::string kitchenWorldYaml(const std::string& recordings) {
   for (const KitchenScene& scene : kitchenScenes()) {
     const asr_ism::Demonstration all =
         asr_ism::sqlite::readDemonstration(recordingPath(recordings, scene), scene.scene);
-    yaml << "  # " << scene.scene << ", set " << heldOutStep(all) << "\n";
-    for (const asr_common::ObjectEstimate& object : all.configuration(heldOutStep(all))) {
+    const std::size_t held_out = heldOutStep(all, placement);
+    yaml << "  # " << scene.scene << ", set " << held_out << "\n";
+    for (const asr_common::ObjectEstimate& object : all.configuration(held_out)) {
       if (!placed.insert(object.key).second)
         continue;
       yaml << "  - type: " << object.key.type << "\n    id: \"" << object.key.id << "\"\n    pose: "

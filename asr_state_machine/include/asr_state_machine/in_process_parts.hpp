@@ -78,7 +78,7 @@ class ScenePredictor : public Predictor {
 };
 
 /// The bounding-box search's "prediction": every missing object may be anywhere on the
-/// furniture (a grid of poses over every top, random yaw), whatever was found.
+/// furniture (a grid of poses over every top, random orientations), whatever was found.
 class FurniturePredictor : public Predictor {
  public:
   /// `spacing`: metres between grid points.
