@@ -15,6 +15,7 @@
 #include "asr_robot_model/tag_detector.hpp"
 #include "asr_robot_model/tag_family.hpp"
 #include "asr_robot_model/testing/tag_scene.hpp"
+#include "refused_edit.hpp"
 
 using asr_common::testing::inputErrorOf;
 using asr_common::testing::TempDir;
@@ -99,14 +100,9 @@ TEST(CameraIntrinsics, CameraInfoFilesRoundTripAndBadOnesNameTheField) {
   const std::string good = asr_common::testing::fileBytes(dir.file("camera.yaml"));
   auto expectRefused = [&](const std::string& from, const std::string& to,
                            const std::string& field) {
-    std::string text = good;
-    const auto at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-    const std::string path = dir.write("bad.yaml", text);
-    const std::string message = inputErrorOf([&] { loadCameraInfo(path); });
-    EXPECT_NE(message.find(path), std::string::npos) << message;
-    EXPECT_NE(message.find(field), std::string::npos) << field << " in: " << message;
+    asr_robot_model::testing::expectEditRefused(
+        dir, "bad.yaml", good, from, to, field,
+        [](const std::string& path) { loadCameraInfo(path); });
   };
   expectRefused("image_width: 800", "image_width: -3", "image_width");
   expectRefused("image_height: 600\n", "", "image_height");

@@ -8,6 +8,7 @@
 #include "asr_common/testing/temp_dir.hpp"
 #include "asr_robot_model/tag_map.hpp"
 #include "asr_robot_model/world.hpp"
+#include "refused_edit.hpp"
 
 using asr_common::testing::inputErrorOf;
 using asr_common::testing::TempDir;
@@ -29,15 +30,9 @@ tags:
 )";
 
 void expectRefused(const std::string& from, const std::string& to, const std::string& field) {
-  TempDir dir("tag_map");
-  std::string text = kValid;
-  const auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-  const std::string path = dir.write("tags.yaml", text);
-  const std::string message = inputErrorOf([&] { loadTagMap(path); });
-  EXPECT_NE(message.find(path), std::string::npos) << message;
-  EXPECT_NE(message.find(field), std::string::npos) << "'" << field << "' in: " << message;
+  asr_robot_model::testing::expectEditRefused(TempDir("tag_map"), "tags.yaml", kValid, from, to,
+                                              field,
+                                              [](const std::string& path) { loadTagMap(path); });
 }
 
 }  // namespace

@@ -104,27 +104,20 @@ TEST(TagsTool, APrintedSheetIsReadBackByTheDetector) {
 
 TEST(TagsTool, BadInputIsNamed) {
   TempDir dir("tags_tool");
-  const auto missing = runTool(
-      TAGS_TOOL, dir,
-      {"detect", "--image", dir.file("none.png"), "--camera-info", dir.file("camera.yaml")});
-  EXPECT_EQ(missing.exit_code, 1);
-  ASSERT_FALSE(missing.err.empty());
-  EXPECT_NE(missing.err.back().find("none.png"), std::string::npos);
-
+  // Exit code 1 and the last line of stderr naming `what`.
+  auto expectNamed = [&](const std::vector<std::string>& arguments, const std::string& what) {
+    const auto run = runTool(TAGS_TOOL, dir, arguments);
+    EXPECT_EQ(run.exit_code, 1) << asr_common::testing::describe(run);
+    ASSERT_FALSE(run.err.empty());
+    EXPECT_NE(run.err.back().find(what), std::string::npos) << run.err.back();
+  };
+  expectNamed({"detect", "--image", dir.file("none.png"), "--camera-info", dir.file("camera.yaml")},
+              "none.png");
   cv::imwrite(dir.file("grey.png"), cv::Mat(48, 64, CV_8U, cv::Scalar(128)));
   dir.write("camera.yaml", "image_width: 64\nimage_height: 48\ncamera_matrix: {data: [1]}\n");
-  const auto bad_camera = runTool(
-      TAGS_TOOL, dir,
-      {"detect", "--image", dir.file("grey.png"), "--camera-info", dir.file("camera.yaml")});
-  EXPECT_EQ(bad_camera.exit_code, 1);
-  ASSERT_FALSE(bad_camera.err.empty());
-  EXPECT_NE(bad_camera.err.back().find("camera_matrix"), std::string::npos);
-
+  expectNamed({"detect", "--image", dir.file("grey.png"), "--camera-info", dir.file("camera.yaml")},
+              "camera_matrix");
+  expectNamed({"print", "--ids", "586-588", "--out", dir.file("x.png")}, "tag 587");
   const auto bad_ids = runTool(TAGS_TOOL, dir, {"print", "--ids", "5-2", "--out", "x.png"});
   EXPECT_EQ(bad_ids.exit_code, 2);
-  const auto outside =
-      runTool(TAGS_TOOL, dir, {"print", "--ids", "586-588", "--out", dir.file("x.png")});
-  EXPECT_EQ(outside.exit_code, 1);
-  ASSERT_FALSE(outside.err.empty());
-  EXPECT_NE(outside.err.back().find("tag 587"), std::string::npos);
 }
