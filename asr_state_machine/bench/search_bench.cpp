@@ -96,9 +96,6 @@ int run(const std::vector<std::string>& arguments) {
       const SearchResult result = InProcessSearch(request).run();
       mode.minutes.push_back(result.sim_seconds / 60.0);
       mode.views.push_back(static_cast<double>(result.world.visitedViews().size()));
-      std::size_t objects = 0;
-      for (const auto& [scene, keys] : result.world.sceneObjects())
-        objects += keys.size();
       mode.found.push_back(static_cast<double>(result.world.foundObjects().size()));
       if (result.outcome == Outcome::kFoundAllObjects)
         ++mode.all_found;
