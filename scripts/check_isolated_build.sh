@@ -102,9 +102,14 @@ check_install_space() {
     lib/libasr_robot_model.so lib/libasr_robot_model_ros.so \
     include/asr_robot_model/robot_description.hpp lib/asr_robot_model/robot \
     lib/asr_robot_model/robot_driver lib/asr_robot_model/object_detector_sim \
+    lib/asr_robot_model/tags lib/asr_robot_model/apriltag_detector lib/asr_robot_model/camera_sim \
+    share/asr_robot_model/config/tag_map.yaml \
     share/asr_robot_model/launch/robot_sim.launch share/asr_robot_model/launch/robot_sim.rviz \
     share/asr_robot_model/urdf/asr_robot.urdf share/asr_robot_model/config/object_types.yaml \
-    share/asr_robot_model/config/worlds/kitchen.yaml; do
+    share/asr_robot_model/config/worlds/kitchen.yaml \
+    lib/libasr_state_machine.so include/asr_state_machine/search_executive.hpp \
+    lib/asr_state_machine/search lib/asr_state_machine/learn_kitchen_models \
+    share/asr_state_machine/config/worlds/kitchen.yaml; do
     if [ ! -e "$install/$file" ]; then
       echo "check_isolated_build: not installed: $file" >&2
       missing=1

@@ -72,6 +72,21 @@ class HypothesisGrid {
   std::map<std::pair<long, long>, std::vector<std::size_t>> cells_;
 };
 
+// acos(q) rounded up to the table's resolution (never below it), for the heading windows: a
+// window a little wider than needed only rates a few headings more, which the depth test
+// rejects exactly.
+double arcCosineUpperBound(double q) {
+  constexpr int kEntries = 4096;
+  static const std::vector<double> table = [] {
+    std::vector<double> values(kEntries + 1);
+    for (int i = 0; i <= kEntries; ++i)
+      values[i] = std::acos(std::clamp(-1.0 + 2.0 * i / kEntries, -1.0, 1.0)) + 1e-9;
+    return values;
+  }();
+  const double index = (q + 1.0) * (kEntries / 2.0);
+  return table[std::clamp(static_cast<int>(index), 0, kEntries)];
+}
+
 // Headings of a level whose axis lies within an angle (its cosine `cosine`) of a direction
 // with this elevation (its sine and cosine) and azimuth: [first, first + count) modulo the
 // level's headings. From cos(angle) = sin e1 sin e2 + cos e1 cos e2 cos(azimuth difference).
@@ -87,7 +102,7 @@ std::pair<long, long> headingWindow(const TiltLevel& level, double level_sine, d
     return {0, 0};
   if (q <= -1.0)
     return {0, all};
-  const double spread = std::acos(q) / level.heading_step;
+  const double spread = arcCosineUpperBound(q) / level.heading_step;
   const double centre = (azimuth - level.first_heading) / level.heading_step;
   const long first = static_cast<long>(std::floor(centre - spread));
   const long last = static_cast<long>(std::ceil(centre + spread));
@@ -109,7 +124,10 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
       map_(map),
       parameters_(std::move(parameters)),
       pool_(pool),
-      orientations_(robot, parameters_.orientation_step, seed) {
+      orientations_(robot, parameters_.orientation_step, seed),
+      orientation_bound_(parameters_.rating_angle),
+      side_bound_(std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0),
+      proximity_bound_((parameters_.frustum.far() - parameters_.frustum.near()) / 2.0) {
   checkNbvParameters(parameters_);
   const double side_angle = std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0;
   for (const TiltLevel& level : orientations_.levels()) {
@@ -128,7 +146,22 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
   camera_reach_ += 0.01;  // the pan samples' margin
 }
 
+double NextBestViewPlanner::orientationBound(const Hypothesis& hypothesis,
+                                             const Eigen::Vector3d& offset, double distance) const {
+  if (hypothesis.normals.empty())
+    return hypothesis.active[0] ? 1.0 : 0.0;
+  // The camera is at -offset from the hypothesis.
+  double best = 0.0;
+  for (std::size_t n = 0; n < hypothesis.normals.size(); ++n) {
+    if (hypothesis.active[n])
+      best = std::max(best,
+                      orientation_bound_.ofCosine(-hypothesis.normals[n].dot(offset) / distance));
+  }
+  return best;
+}
+
 void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
+                                      const std::vector<Eigen::Vector3d>& points,
                                       const std::vector<std::size_t>& nearby,
                                       const Eigen::Vector2d& position, std::size_t position_index,
                                       std::vector<Candidate>& candidates) const {
@@ -136,6 +169,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   const double side_angle = std::min(frustum.fovx(), frustum.fovy()) / 2.0;
   const double side_cosine = std::cos(side_angle);
   const double reach = frustum.far() / side_cosine;
+  const double middle = (frustum.near() + frustum.far()) / 2.0;
   const std::size_t type_count = hypotheses.types().size();
   const std::vector<TiltLevel>& levels = orientations_.levels();
   thread_local std::vector<double> utility;  // orientation x type
@@ -143,11 +177,10 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   utility.assign(orientations_.size() * type_count, 0.0);
   touched.assign(orientations_.size(), 0);
   for (std::size_t index : nearby) {
-    const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
-    const Eigen::Vector3d& point = hypothesis.box.pose.position;
+    const Eigen::Vector3d& point = points[index];
     const Eigen::Vector2d across = point.head<2>() - position;
     const double horizontal = across.norm();
-    const double azimuth = std::atan2(across.y(), across.x());
+    double azimuth = std::numeric_limits<double>::quiet_NaN();  // when a level needs it
     for (std::size_t l = 0; l < levels.size(); ++l) {
       const TiltLevel& level = levels[l];
       // Only levels whose axis elevation lies within the side angle of the hypothesis' can see
@@ -160,19 +193,29 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
       const double distance = offset.norm();
       if (distance <= frustum.near() || distance >= reach)
         continue;
-      const double orientation = orientationUtility(hypothesis, camera, parameters_.rating_angle);
+      const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
+      const double orientation = orientationBound(hypothesis, offset, distance);
       if (orientation == 0.0)
         continue;
+      if (std::isnan(azimuth))
+        azimuth = std::atan2(across.y(), across.x());
+      const double inverse_distance = 1.0 / distance;
       const auto [first, count] =
-          headingWindow(level, level_sine_[l], level_cosine_[l], rise / distance,
-                        horizontal / distance, azimuth, side_cosine);
+          headingWindow(level, level_sine_[l], level_cosine_[l], rise * inverse_distance,
+                        horizontal * inverse_distance, azimuth, side_cosine);
       const long headings = static_cast<long>(level.headings);
-      for (long h = first; h < first + count; ++h) {
-        const std::size_t o = level.first_orientation +
-                              static_cast<std::size_t>(((h % headings) + headings) % headings);
-        const double terms = sideProximity(orientations_.axis(o), offset, frustum);
+      long h = ((first % headings) + headings) % headings;
+      double* const row = utility.data() + hypothesis.type;
+      for (long k = 0; k < count; ++k, h = (h + 1 == headings) ? 0 : h + 1) {
+        const std::size_t o = level.first_orientation + static_cast<std::size_t>(h);
+        // Bounds of sideProximity's terms, as the orientation's above.
+        const double depth = orientations_.axis(o).dot(offset);
+        if (depth <= side_cosine * distance)
+          continue;
+        const double terms = proximity_bound_.ofDistance(std::abs(depth - middle)) *
+                             side_bound_.ofCosine(depth * inverse_distance);
         if (terms > 0.0) {
-          utility[o * type_count + hypothesis.type] += orientation * terms;
+          row[o * type_count] += orientation * terms;
           touched[o] = 1;
         }
       }
@@ -207,12 +250,19 @@ asr_common::Pose NextBestViewPlanner::cameraOf(
 
 std::vector<double> NextBestViewPlanner::occludedUtility(const HypothesisSet& hypotheses,
                                                          const std::vector<std::size_t>& nearby,
-                                                         const asr_common::Pose& camera) const {
+                                                         const asr_common::Pose& camera,
+                                                         std::vector<signed char>& sight) const {
   std::vector<double> per_type(hypotheses.types().size(), 0.0);
-  for (std::size_t index : nearby) {
-    const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
+  if (sight.empty())
+    sight.assign(nearby.size(), -1);
+  for (std::size_t k = 0; k < nearby.size(); ++k) {
+    const Hypothesis& hypothesis = hypotheses.hypotheses()[nearby[k]];
     const double u = hypothesisUtility(camera, hypothesis, parameters_);
-    if (u > 0.0 && map_.lineOfSight(camera.position, hypothesis.box))
+    if (u <= 0.0)
+      continue;
+    if (sight[k] < 0)
+      sight[k] = map_.lineOfSight(camera.position, hypothesis.box) ? 1 : 0;
+    if (sight[k] == 1)
       per_type[hypothesis.type] += u;
   }
   return per_type;
@@ -224,12 +274,17 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
   const double reach = frustum.far() / std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
   const HypothesisGrid grid(hypotheses, reach);
+  // The positions packed, for the first pass's sweep over them.
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(hypotheses.hypotheses().size());
+  for (const Hypothesis& hypothesis : hypotheses.hypotheses())
+    points.push_back(hypothesis.box.pose.position);
   std::vector<std::vector<std::size_t>> nearby(positions.size());
   std::vector<std::vector<Candidate>> per_position(positions.size());
   auto rate_position = [&](std::size_t p) {
     nearby[p] = grid.near(hypotheses, positions[p], reach);
     if (!nearby[p].empty())
-      utilitiesAt(hypotheses, nearby[p], positions[p], p, per_position[p]);
+      utilitiesAt(hypotheses, points, nearby[p], positions[p], p, per_position[p]);
   };
   if (pool_ != nullptr)
     pool_->parallelFor(positions.size(), rate_position);
@@ -249,10 +304,16 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   // sight is checked only for the candidates whose bound can still win, best bound first.
   std::vector<std::vector<double>> exact(candidates.size());
   std::vector<double> exact_total(candidates.size(), -1.0);
+  // Lines of sight from a camera position (lattice point and tilt level's height) to its nearby
+  // hypotheses, cast once for all the orientations rated there.
+  const std::size_t level_count = orientations_.levels().size();
+  std::vector<std::vector<signed char>> sight(positions.size() * level_count);
   auto exactUtility = [&](std::size_t c) {
     if (exact_total[c] < 0.0) {
-      exact[c] = occludedUtility(hypotheses, nearby[candidates[c].position],
-                                 cameraOf(candidates[c], positions));
+      const Candidate& candidate = candidates[c];
+      exact[c] = occludedUtility(
+          hypotheses, nearby[candidate.position], cameraOf(candidate, positions),
+          sight[candidate.position * level_count + orientations_.levelOf(candidate.orientation)]);
       exact_total[c] = std::accumulate(exact[c].begin(), exact[c].end(), 0.0);
     }
     return exact_total[c];
@@ -324,6 +385,7 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
     const InverseCosts costs = inverseCosts(motion, current, ik.state, robot_, choice.types.size(),
                                             type_count, parameters_);
     const double value = rating(choice.utility, utility_max, costs, weights);
+    step.view.rated.push_back({ik.camera, value});
     if (value > best_rating) {
       best_rating = value;
       PlannedView& view = step.view;
@@ -367,6 +429,7 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
   double reach = (high - low).norm();
   double scale = 1.0, previous_rating = 0.0;
   std::size_t rated = 0;
+  std::vector<RatedCandidate> rated_views;
   for (int k = 0; k < parameters_.max_steps; ++k) {
     const double radius = std::pow(scale, 0.382) * parameters_.lattice_radius;
     std::vector<Eigen::Vector2d> positions = hexagonalLattice(centre, radius, reach, low, high);
@@ -379,6 +442,7 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
     Step step = rateStep(hypotheses, positions, current);
     if (!step.found)
       break;
+    rated_views.insert(rated_views.end(), step.view.rated.begin(), step.view.rated.end());
     result = step.view;
     result.steps = static_cast<std::size_t>(k) + 1;
     if (k > 0 && std::abs(step.view.rating - previous_rating) <= parameters_.rating_epsilon)
@@ -390,7 +454,60 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
     scale /= 2.0;
   }
   result.candidates_rated = rated;
+  result.rated = std::move(rated_views);
   return result;
+}
+
+RatedViews NextBestViewPlanner::rateViews(const HypothesisSet& hypotheses,
+                                          const std::vector<VisitedView>& views,
+                                          const RobotState& current) const {
+  asr_robot_model::checkFinite(current, "current robot state");
+  std::vector<ViewUtility> utilities;
+  RatedViews rated;
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const asr_common::Pose& camera = views[v].camera;
+    asr_common::validatedPose(camera.position, camera.orientation,
+                              "view " + std::to_string(v) + " camera");
+    utilities.push_back(viewUtility(camera, hypotheses, parameters_, &map_));
+    rated.utility_max = std::max(rated.utility_max, utilities.back().total);
+  }
+  const std::size_t type_count = hypotheses.countingTypes();
+  const asr_robot_model::BaseIsFree base_is_free = [this](double x, double y, double) {
+    return map_.baseIsFree(x, y);
+  };
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const VisitedView& given = views[v];
+    RatedView view;
+    if (given.types.empty()) {
+      const TypeChoice choice =
+          bestTypeSubset(utilities[v].per_type, rated.utility_max, type_count, parameters_.weights);
+      for (int type : choice.types)
+        view.types.push_back(hypotheses.types()[type]);
+      view.utility = choice.utility;
+    } else {
+      view.types = given.types;
+      for (const std::string& name : given.types) {
+        const int type = hypotheses.typeIndex(name);
+        view.utility += type >= 0 ? utilities[v].per_type[type] : 0.0;
+      }
+    }
+    const asr_robot_model::IkResult ik =
+        kinematics_.solve(given.camera.position, given.camera.orientation, current, base_is_free);
+    view.reachable = ik.reachable;
+    view.refusal = ik.explanation;
+    view.camera = ik.reachable ? ik.camera : given.camera;
+    if (ik.reachable) {
+      const asr_robot_model::Motion motion =
+          asr_robot_model::motionBetween(current, ik.state, kinematics_.speeds());
+      view.state = ik.state;
+      view.costs = inverseCosts(motion, current, ik.state, robot_, view.types.size(),
+                                std::max(type_count, view.types.size()), parameters_);
+      view.motion_seconds = motion.seconds;
+      view.rating = rating(view.utility, rated.utility_max, view.costs, parameters_.weights);
+    }
+    rated.views.push_back(std::move(view));
+  }
+  return rated;
 }
 
 }  // namespace asr_nbv

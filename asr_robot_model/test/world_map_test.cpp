@@ -1,6 +1,8 @@
 // The OctoMap of a world: free space for the base and occlusion golden cases.
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "asr_common/testing/input_error_of.hpp"
 #include "asr_robot_model/world_map.hpp"
 
@@ -61,6 +63,27 @@ TEST(WorldMap, CupOnTheTableIsSeenFromAboveAndNotThroughTheTable) {
   const Box& cup = world.objects[0].box;
   EXPECT_TRUE(map.lineOfSight({1.0, 1.1, 1.4}, cup));   // from above the table's edge
   EXPECT_FALSE(map.lineOfSight({3.0, 1.1, 0.5}, cup));  // through the table's side
+}
+
+TEST(WorldMap, ShortcutOfTheLineOfSightAgreesWithTheRayCast) {
+  // Random segments in and around the golden world (many pass near the boxes, many not), at two
+  // resolutions: the shortcut never changes the answer.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> x(-1.0, 5.0), y(-1.0, 4.0), z(0.0, 2.0);
+  for (const double resolution : {0.02, 0.05}) {
+    const WorldMap map(goldenWorld(), resolution, 0.3);
+    int unblocked = 0;
+    for (int i = 0; i < 4000; ++i) {
+      const Eigen::Vector3d eye(x(random), y(random), z(random));
+      const Box target = box({x(random), y(random), z(random)}, {0.1, 0.1, 0.1});
+      const bool cast = map.lineOfSightByRayCast(eye, target);
+      ASSERT_EQ(map.lineOfSight(eye, target), cast)
+          << "eye " << eye.transpose() << " target " << target.pose.position.transpose();
+      unblocked += cast ? 1 : 0;
+    }
+    EXPECT_GT(unblocked, 1000);  // both answers occur often
+    EXPECT_LT(unblocked, 3900);
+  }
 }
 
 TEST(WorldMap, BadResolutionIsRefused) {

@@ -10,6 +10,7 @@
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/temp_dir.hpp"
 #include "asr_robot_model/world.hpp"
+#include "refused_edit.hpp"
 
 using asr_common::testing::inputErrorOf;
 using asr_common::testing::TempDir;
@@ -35,16 +36,10 @@ std::set<std::string> recordedTypes(const std::string& database) {
 
 // The example with `from` replaced by `to`; the error must name the file and `field`.
 void expectRefused(const std::string& from, const std::string& to, const std::string& field) {
-  TempDir dir("world");
-  std::string text = asr_common::testing::fileBytes(kExample);
-  const auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-  const std::string path = dir.write("world.yaml", text);
   const ObjectCatalogue catalogue = loadObjectCatalogue(defaultObjectCatalogue());
-  const std::string message = inputErrorOf([&] { loadWorld(path, catalogue); });
-  EXPECT_NE(message.find(path), std::string::npos) << message;
-  EXPECT_NE(message.find(field), std::string::npos) << "'" << field << "' in: " << message;
+  asr_robot_model::testing::expectEditRefused(
+      TempDir("world"), "world.yaml", asr_common::testing::fileBytes(kExample), from, to, field,
+      [&](const std::string& path) { loadWorld(path, catalogue); });
 }
 
 }  // namespace

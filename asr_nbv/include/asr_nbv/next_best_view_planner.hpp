@@ -7,13 +7,22 @@
 #include "asr_ism/thread_pool.hpp"
 #include "asr_nbv/candidate_views.hpp"
 #include "asr_nbv/hypotheses.hpp"
+#include "asr_nbv/nbv_documents.hpp"
 #include "asr_nbv/nbv_parameters.hpp"
+#include "asr_nbv/raised_cosine_bound.hpp"
 #include "asr_nbv/view_rating.hpp"
 #include "asr_robot_model/inverse_kinematics.hpp"
 #include "asr_robot_model/world.hpp"
 #include "asr_robot_model/world_map.hpp"
 
 namespace asr_nbv {
+
+/// A candidate view the planner rated in full (utility with occlusion, inverse kinematics,
+/// costs), for display: the camera as reached and its rating.
+struct RatedCandidate {
+  asr_common::Pose camera;
+  double rating = 0.0;
+};
 
 /// The view chosen (or none: nothing left to see from anywhere the robot can go).
 struct PlannedView {
@@ -28,6 +37,24 @@ struct PlannedView {
   double motion_seconds = 0.0;       // from the current state, by the motion model
   std::size_t candidates_rated = 0;  // positions x orientations over all steps
   std::size_t steps = 0;
+  std::vector<RatedCandidate> rated;  // every candidate rated in full, over all steps
+};
+
+/// A given view rated as the planner rates its candidates (NextBestViewPlanner::rateViews).
+struct RatedView {
+  bool reachable = false;
+  std::string refusal;                // the inverse kinematics' explanation if not reachable
+  asr_common::Pose camera;            // as reached (the head cannot roll the camera)
+  asr_robot_model::RobotState state;  // that takes it
+  std::vector<std::string> types;     // rated: as given, or the best subset if none were
+  double utility = 0.0;               // of `types`, occluded hypotheses excluded
+  double rating = 0.0;                // 0 if not reachable
+  InverseCosts costs;
+  double motion_seconds = 0.0;
+};
+struct RatedViews {
+  std::vector<RatedView> views;
+  double utility_max = 0.0;  // the largest utility (all types) among the views
 };
 
 /// Next-best-view search: candidate camera positions on a hexagonal lattice over the room,
@@ -48,6 +75,12 @@ class NextBestViewPlanner {
   PlannedView plan(const HypothesisSet& hypotheses,
                    const asr_robot_model::RobotState& current) const;
 
+  /// Rates `views` (camera poses with types to search; no types: the best subset) from
+  /// `current`, the utility normalised by the largest among them. A camera pose that is not
+  /// finite or not unit-length is an asr_common::InputError naming the view.
+  RatedViews rateViews(const HypothesisSet& hypotheses, const std::vector<VisitedView>& views,
+                       const asr_robot_model::RobotState& current) const;
+
   const NbvParameters& parameters() const { return parameters_; }
   const asr_robot_model::InverseKinematics& kinematics() const { return kinematics_; }
 
@@ -56,18 +89,26 @@ class NextBestViewPlanner {
   struct Step;
   Step rateStep(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
                 const asr_robot_model::RobotState& current) const;
-  void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<std::size_t>& nearby,
-                   const Eigen::Vector2d& position, std::size_t position_index,
-                   std::vector<Candidate>& candidates) const;
+  /// `points`: the hypotheses' positions, as hypotheses.hypotheses() holds them.
+  void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector3d>& points,
+                   const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
+                   std::size_t position_index, std::vector<Candidate>& candidates) const;
+  /// >= orientationUtility of the hypothesis seen from the camera at `offset` from it
+  /// (`distance` its length), by table look-up.
+  double orientationBound(const Hypothesis& hypothesis, const Eigen::Vector3d& offset,
+                          double distance) const;
   /// False if no base position within camera_reach_ of the camera's floor point (sampled on
   /// its circle) is free: the camera cannot be carried there.
   bool reachable(const Eigen::Vector2d& camera) const;
   asr_common::Pose cameraOf(const Candidate& candidate,
                             const std::vector<Eigen::Vector2d>& positions) const;
   /// Utility per type of the hypotheses `nearby` seen from `camera`, occluded ones excluded.
+  /// `sight`: lines of sight from this camera position to `nearby` (1 free, 0 blocked, -1 not
+  /// yet cast; empty: none cast), filled as they are cast.
   std::vector<double> occludedUtility(const HypothesisSet& hypotheses,
                                       const std::vector<std::size_t>& nearby,
-                                      const asr_common::Pose& camera) const;
+                                      const asr_common::Pose& camera,
+                                      std::vector<signed char>& sight) const;
 
   asr_robot_model::RobotDescription robot_;
   asr_robot_model::InverseKinematics kinematics_;
@@ -80,6 +121,8 @@ class NextBestViewPlanner {
   // angle of the level's axis elevation.
   std::vector<double> band_low_, band_high_;
   std::vector<double> level_sine_, level_cosine_;  // of each level's axis elevation
+  // The first pass's bounds of the orientation, side and proximity terms.
+  RaisedCosineBound orientation_bound_, side_bound_, proximity_bound_;
   double camera_reach_ = 0.0;  // metres from the base's centre to the camera, on the floor
 };
 

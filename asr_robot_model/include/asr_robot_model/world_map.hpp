@@ -29,7 +29,11 @@ class WorldMap {
 
   /// True if the segment from `eye` to `target`'s centre crosses no occupied voxel but those of
   /// the target itself (voxels whose centre lies within half a voxel diagonal of its box).
+  /// A segment that passes farther than a voxel diagonal from every box of the world is free
+  /// without a ray cast.
   bool lineOfSight(const Eigen::Vector3d& eye, const Box& target) const;
+  /// lineOfSight by the ray cast alone, always: the reference its shortcut is tested against.
+  bool lineOfSightByRayCast(const Eigen::Vector3d& eye, const Box& target) const;
 
   double resolution() const;
   /// Centres of the occupied voxels (for display).

@@ -31,7 +31,8 @@ Marker voxelMarker(const WorldMap& map, const std_msgs::Header& header) {
   return marker;
 }
 
-// The frustum's 12 edges in the camera's optical frame.
+}  // namespace
+
 Marker frustumMarker(const Frustum& frustum, std_msgs::Header header, const std::string& frame) {
   header.frame_id = frame;
   Marker marker = newMarker(header, "frustum", 0, Marker::LINE_LIST);
@@ -53,8 +54,6 @@ Marker frustumMarker(const Frustum& frustum, std_msgs::Header header, const std:
   }
   return marker;
 }
-
-}  // namespace
 
 visualization_msgs::MarkerArray worldMarkers(const World& world, const WorldMap& map,
                                              const Frustum& frustum, const std_msgs::Header& header,

@@ -11,6 +11,11 @@
 // cube list of its occupied voxels).
 namespace asr_robot_model::ros_interface {
 
+/// The frustum's 12 edges as a line list in `frame` (the camera's optical frame), namespace
+/// "frustum", id 0, yellow.
+visualization_msgs::Marker frustumMarker(const Frustum& frustum, std_msgs::Header header,
+                                         const std::string& frame);
+
 /// Furniture (boxes, namespace "furniture"), the true object poses (dimmed boxes, "objects",
 /// with their names as text, "object_names"), the occupied voxels ("voxels") in `header`'s frame
 /// (map), and the camera frustum ("frustum", lines in `camera_frame`). Opens with DELETEALL.
