@@ -1,7 +1,6 @@
 #pragma once
 
 #include <cstddef>
-#include <limits>
 #include <vector>
 
 #include "asr_ism/ism.hpp"
@@ -66,13 +65,6 @@ struct IsmResultSelection {
   /// (one that matches every input around it, one per member, fully); a result at another pose is
   /// another placeholder for the parent even if it explains no new estimate.
   std::size_t best_count = 0;
-  /// Also return every hypothesis whose objective reaches this, however many, each with its exact
-  /// objective; of hypotheses at one pose (within 1e-12) only the best, since it serves a parent
-  /// at least as well. An exact search over a tree asks a sub-ISM for every result that could
-  /// still be part of a better instance (tree_recognizer.cpp). Infinity: none beyond the above.
-  double every_result_from = std::numeric_limits<double>::infinity();
-  /// Only results whose objective reaches this (the search skips everything below it).
-  double at_least = -std::numeric_limits<double>::infinity();
 };
 
 /// Work counts of a recognition, comparable across machines.
