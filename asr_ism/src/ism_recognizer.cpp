@@ -7,6 +7,7 @@
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "asr_ism/common_types.hpp"
 #include "asr_ism/compliance.hpp"
@@ -76,6 +77,9 @@ struct Neighbourhood {
   // Every member here votes from a single input, so a hypothesis that matches all of them fully
   // uses every estimate here, and anything else in the bin would only repeat part of it.
   bool one_input_per_member = false;
+  // Some hypothesis here may be perfect: one input per member, and a candidate with a vote of
+  // every member on it (CoincidentVotes).
+  bool may_hold_perfect = false;
   // The bin holds a vote of the ISM's reference object, which votes where it is: where a scene is
   // seen fully, a perfect result is found in such a bin.
   bool holds_reference_vote = false;
@@ -114,15 +118,94 @@ int referenceMember(const Ism& ism) {
   return -1;
 }
 
+// Which votes coincide. A perfect hypothesis matches a vote of every member with similarity 1 up
+// to the objective's resolution: each such vote lies within `reach` of the hypothesis. Where no
+// candidate has every member's vote that close (detections with noise, clutter), no perfect
+// result can be found, and the search need not wait for one (Bar).
+class CoincidentVotes {
+ public:
+  CoincidentVotes(const Votes& votes, double support_radius, std::size_t member_count)
+      : votes_(votes), member_stamp_(member_count, 0) {
+    double min_weight = std::numeric_limits<double>::infinity();
+    for (double w : votes.weight)
+      min_weight = std::min(min_weight, w);
+    // position compliance 1 - d^2 / r^2 may miss 1 by at most 2 levels / weight
+    reach_ = support_radius * std::sqrt(2.0 * kBoundMargin / min_weight);
+    usable_ = reach_ < 0.01 * support_radius;
+    if (!usable_)
+      return;
+    cells_.reserve(votes.px.size());
+    for (std::uint32_t v = 0; v < votes.px.size(); ++v)
+      cells_[cellOf(votes.px[v], votes.py[v], votes.pz[v])].push_back(v);
+  }
+
+  // Whether every member in `members` has a vote within reach of vote c.
+  bool allMembersOn(std::uint32_t c, const std::vector<int>& members) {
+    if (!usable_)
+      return true;
+    ++stamp_;
+    std::size_t found = 0;
+    const double x = votes_.px[c], y = votes_.py[c], z = votes_.pz[c];
+    const Cell own = cellOf(x, y, z);
+    // Within reach of a point lies at most the nearer neighbour cell per axis.
+    const Cell step = {lowerHalf(x, own[0]) ? -1 : 1, lowerHalf(y, own[1]) ? -1 : 1,
+                       lowerHalf(z, own[2]) ? -1 : 1};
+    for (int corner = 0; corner < 8; ++corner) {
+      const Cell cell = {own[0] + ((corner & 1) ? step[0] : 0),
+                         own[1] + ((corner & 2) ? step[1] : 0),
+                         own[2] + ((corner & 4) ? step[2] : 0)};
+      const auto it = cells_.find(cell);
+      if (it == cells_.end())
+        continue;
+      for (std::uint32_t v : it->second) {
+        const double dx = votes_.px[v] - x, dy = votes_.py[v] - y, dz = votes_.pz[v] - z;
+        const int m = votes_.member[v];
+        if (dx * dx + dy * dy + dz * dz <= reach_ * reach_ && member_stamp_[m] != stamp_) {
+          member_stamp_[m] = stamp_;
+          ++found;
+        }
+      }
+    }
+    return found >= members.size();
+  }
+
+ private:
+  using Cell = std::array<std::int64_t, 3>;
+  struct CellHash {
+    std::size_t operator()(const Cell& cell) const {
+      return static_cast<std::size_t>(cell[0] * 73856093 ^ cell[1] * 19349663 ^ cell[2] * 83492791);
+    }
+  };
+
+  Cell cellOf(double x, double y, double z) const {
+    return {static_cast<std::int64_t>(std::floor(x / reach_)),
+            static_cast<std::int64_t>(std::floor(y / reach_)),
+            static_cast<std::int64_t>(std::floor(z / reach_))};
+  }
+  bool lowerHalf(double coordinate, std::int64_t cell) const {
+    return coordinate - static_cast<double>(cell) * reach_ < 0.5 * reach_;
+  }
+
+  const Votes& votes_;
+  double reach_ = 0.0;
+  bool usable_ = false;
+  std::unordered_map<Cell, std::vector<std::uint32_t>, CellHash> cells_;
+  std::vector<std::uint32_t> member_stamp_;
+  std::uint32_t stamp_ = 0;
+};
+
 class Search {
  public:
   Search(const Ism& ism, const Votes& votes, const std::vector<std::vector<int>>& atoms_of_input,
-         const IsmRecognitionParameters& parameters, IsmRecognitionStats& stats)
+         const IsmRecognitionParameters& parameters, std::size_t max_comparisons,
+         IsmRecognitionStats& stats)
       : votes_(votes),
+        coincident_(votes, parameters.supportRadius(), ism.members.size()),
         atoms_of_input_(atoms_of_input),
         member_count_(ism.members.size()),
         reference_member_(referenceMember(ism)),
         stats_(stats),
+        max_comparisons_(max_comparisons),
         support_radius_squared_(parameters.supportRadius() * parameters.supportRadius()),
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         sin_half_squared_max_angle_(sinHalfSquared(cos_half_max_angle_)) {
@@ -197,6 +280,10 @@ class Search {
     // itself prefers (the reference's own vote first), not the one the bin layout puts first.
     std::sort(n.candidates.begin(), n.candidates.end(),
               [&](std::uint32_t a, std::uint32_t b) { return votes_.keyLess(a, b); });
+    n.may_hold_perfect =
+        n.one_input_per_member &&
+        std::any_of(n.candidates.begin(), n.candidates.end(),
+                    [&](std::uint32_t c) { return coincident_.allMembersOn(c, n.members); });
   }
 
   // Evaluates the hypotheses of one bin in key order and passes each that may still be selected
@@ -204,15 +291,20 @@ class Search {
   // A bin keeps every combination of inputs it finds, not only its best: which distinct results
   // exist then does not depend on how the bin grid groups the votes, so the answer is that of an
   // exhaustive search over all votes (a rigid motion of the input cannot change it).
+  // `every_from`: every hypothesis reaching it is wanted, so none may be skipped for a perfect one.
   template <typename BarNow, typename Emit>
-  void searchBin(const Neighbourhood& n, BarNow bar_now, Emit emit) {
+  void searchBin(const Neighbourhood& n, double every_from, BarNow bar_now, Emit emit) {
+    const bool every_here_wanted = n.upper_bound >= every_from - kBoundMargin;
     double threshold = bar_now();
     for (std::uint32_t c : n.candidates) {
       if (n.upper_bound < threshold - kBoundMargin)
         return;  // nothing in this bin can be selected any more
       ++stats_.candidates;
       double objective;
-      if (!evaluate(c, n, threshold, objective) || objective <= 0.0)
+      const bool scored = evaluate(c, n, threshold, objective);
+      if (stats_.comparisons > max_comparisons_)
+        throw IsmWorkLimitExceeded();
+      if (!scored || objective <= 0.0)
         continue;
       Hypothesis hypothesis;
       hypothesis.candidate = static_cast<int>(c);
@@ -233,7 +325,7 @@ class Search {
           std::all_of(n.members.begin(), n.members.end(), [&](int m) { return vote_[m] >= 0; });
       const bool perfect = hypothesis.perfect;
       emit(std::move(hypothesis));
-      if (perfect)
+      if (perfect && !every_here_wanted)
         return;
       threshold = bar_now();
     }
@@ -309,10 +401,12 @@ class Search {
   }
 
   const Votes& votes_;
+  CoincidentVotes coincident_;
   const std::vector<std::vector<int>>& atoms_of_input_;
   const std::size_t member_count_;
   const int reference_member_;
   IsmRecognitionStats& stats_;
+  const std::size_t max_comparisons_;
   const double support_radius_squared_;
   const double cos_half_max_angle_;
   const double sin_half_squared_max_angle_;
@@ -348,29 +442,16 @@ struct AssignmentHash {
 class Bar {
  public:
   Bar(const std::vector<std::vector<int>>& atoms_of_input, const IsmResultSelection& selection)
-      : atoms_of_input_(atoms_of_input), best_count_(selection.best_count) {}
+      : atoms_of_input_(atoms_of_input),
+        best_count_(selection.best_count),
+        every_result_from_(selection.every_result_from),
+        at_least_(selection.at_least) {}
 
   bool dropsSubsets() const { return best_count_ == 0; }
 
   // The objective a result of a bin with this neighbourhood must reach to be selected.
   double forBin(const Neighbourhood& n) const {
-    double bar = kNoThreshold;
-    if (!dropsSubsets()) {
-      // Only results better than any perfect result still possible are sure to stay; a perfect
-      // result found later could drop the others.
-      std::size_t sure = 0;
-      for (const auto& entry : best_)
-        sure += entry.objective > perfect_bound_ + kBoundMargin ? 1 : 0;
-      if (sure >= best_count_)
-        return best_[best_count_ - 1].objective;
-    }
-    for (const auto& [objective, atoms] : dominators_) {
-      if (objective > bar &&
-          std::includes(atoms.begin(), atoms.end(), n.atoms.begin(), n.atoms.end())) {
-        bar = objective;
-      }
-    }
-    return bar;
+    return std::max(std::min(bestOrDominatorBar(n), every_result_from_), at_least_);
   }
 
   // The highest objective a perfect result of the bins not yet searched could have: the upper
@@ -404,6 +485,26 @@ class Bar {
     std::vector<int> atoms;
   };
 
+  double bestOrDominatorBar(const Neighbourhood& n) const {
+    double bar = kNoThreshold;
+    if (!dropsSubsets()) {
+      // Only results better than any perfect result still possible are sure to stay; a perfect
+      // result found later could drop the others.
+      std::size_t sure = 0;
+      for (const auto& entry : best_)
+        sure += entry.objective > perfect_bound_ + kBoundMargin ? 1 : 0;
+      if (sure >= best_count_)
+        return best_[best_count_ - 1].objective;
+    }
+    for (const auto& [objective, atoms] : dominators_) {
+      if (objective > bar &&
+          std::includes(atoms.begin(), atoms.end(), n.atoms.begin(), n.atoms.end())) {
+        bar = objective;
+      }
+    }
+    return bar;
+  }
+
   bool dominated(double objective, const std::vector<int>& atoms) const {
     return std::any_of(dominators_.begin(), dominators_.end(), [&](const auto& dominator) {
       return dominator.first >= objective &&
@@ -430,6 +531,8 @@ class Bar {
 
   const std::vector<std::vector<int>>& atoms_of_input_;
   const std::size_t best_count_;
+  const double every_result_from_;
+  const double at_least_;
   std::vector<std::pair<double, std::vector<int>>> dominators_;
   std::vector<BestEntry> best_;
   double perfect_bound_ = std::numeric_limits<double>::infinity();
@@ -512,7 +615,8 @@ Votes sortedByBin(const Votes& cast, const VotingSpace& space) {
 
 // Every hypothesis that may be selected, bins with the highest upper bound first: their results
 // raise the bar for the rest.
-std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar& bar) {
+std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar& bar,
+                                   double every_result_from) {
   const std::size_t bin_count = space.bins().size();
   std::vector<Neighbourhood> neighbourhoods(bin_count);
   for (std::size_t b = 0; b < bin_count; ++b)
@@ -532,14 +636,14 @@ std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar
   std::vector<double> perfect_bound(bin_count + 1, kNoThreshold);
   for (std::size_t i = bin_count; i-- > 0;) {
     const Neighbourhood& n = neighbourhoods[bin_order[i]];
-    perfect_bound[i] = n.one_input_per_member ? n.upper_bound : perfect_bound[i + 1];
+    perfect_bound[i] = n.may_hold_perfect ? n.upper_bound : perfect_bound[i + 1];
   }
   std::vector<Hypothesis> found;
   for (std::size_t i = 0; i < bin_count; ++i) {
     const Neighbourhood& n = neighbourhoods[bin_order[i]];
     bar.setPerfectBound(perfect_bound[i]);
     search.searchBin(
-        n, [&] { return bar.forBin(n); },
+        n, every_result_from, [&] { return bar.forBin(n); },
         [&](Hypothesis&& hypothesis) {
           bar.add(hypothesis);
           found.push_back(std::move(hypothesis));
@@ -568,10 +672,36 @@ IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, std::vector
   return result;
 }
 
+// A hypothesis' pose at the resolution at which votes coincide: composed along different paths,
+// equal poses differ in their last bits only. The quaternion's sign is fixed (q and -q are one
+// orientation).
+using PoseKey = std::array<std::int64_t, 7>;
+
+PoseKey poseKey(const Votes& votes, int c) {
+  constexpr double kResolution = 1e-12;
+  const double sign = votes.qw[c] < 0.0 ? -1.0 : 1.0;
+  const double values[7] = {votes.px[c],        votes.py[c],        votes.pz[c],
+                            sign * votes.qw[c], sign * votes.qx[c], sign * votes.qy[c],
+                            sign * votes.qz[c]};
+  PoseKey key;
+  for (std::size_t i = 0; i < key.size(); ++i)
+    key[i] = std::llround(values[i] / kResolution);
+  return key;
+}
+
+struct PoseKeyHash {
+  std::size_t operator()(const PoseKey& key) const {
+    std::size_t hash = 1469598103934665603ULL;
+    for (std::int64_t value : key)
+      hash = (hash ^ static_cast<std::size_t>(value)) * 1099511628211ULL;
+    return hash;
+  }
+};
+
 // Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
 // nor the bin grid decides between equally good results; then one result per assignment, and none
 // whose estimates a better result uses too: at the root any better result, below it a perfect
-// one (see Bar).
+// one (see Bar). Besides, every hypothesis reaching `every_result_from`, one per pose.
 std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes& votes,
                                      const std::vector<std::vector<int>>& atoms_of_input,
                                      const IsmResultSelection& selection) {
@@ -582,23 +712,33 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
       return level_a > level_b;
     return votes.keyLess(a.candidate, b.candidate);
   });
+  const double every_from = selection.every_result_from - kBoundMargin;
   std::vector<IsmResult> results;
+  std::size_t best_taken = 0;
   std::unordered_map<std::vector<int>, bool, AssignmentHash> seen;
   std::vector<std::vector<int>> kept_atoms;
+  std::unordered_set<PoseKey, PoseKeyHash> poses_taken;
   for (Hypothesis& hypothesis : found) {
-    if (!seen.emplace(hypothesis.assignment, true).second)
-      continue;
+    const bool capped = selection.best_count > 0 && best_taken >= selection.best_count;
+    if ((capped && hypothesis.objective < every_from) ||
+        hypothesis.objective < selection.at_least - kBoundMargin)
+      break;  // sorted: nothing later is wanted
     std::vector<int> atoms = unionOfAtoms(hypothesis.assignment, atoms_of_input);
-    const bool dominated =
-        std::any_of(kept_atoms.begin(), kept_atoms.end(), [&](const std::vector<int>& better) {
-          return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
-        });
-    if (dominated)
+    bool as_best = false;
+    if (seen.emplace(hypothesis.assignment, true).second && !capped) {
+      as_best = std::none_of(kept_atoms.begin(), kept_atoms.end(), [&](const auto& better) {
+        return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
+      });
+    }
+    const PoseKey pose = poseKey(votes, hypothesis.candidate);
+    const bool pose_new = poses_taken.insert(pose).second;
+    if (!as_best && !(hypothesis.objective >= every_from && pose_new))
       continue;
-    if (selection.best_count > 0 && results.size() >= selection.best_count)
-      break;
-    if (selection.best_count == 0 || hypothesis.perfect)
-      kept_atoms.push_back(atoms);
+    if (as_best) {
+      ++best_taken;
+      if (selection.best_count == 0 || hypothesis.perfect)
+        kept_atoms.push_back(atoms);
+    }
     results.push_back(resultOf(hypothesis, votes, std::move(atoms)));
   }
   return results;
@@ -620,9 +760,9 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
   local_stats.votes = votes.px.size();
   local_stats.bins = space.bins().size();
   const std::vector<std::vector<int>> atoms_of_input = atomsOfInputs(inputs);
-  Search search(ism, votes, atoms_of_input, parameters, local_stats);
+  Search search(ism, votes, atoms_of_input, parameters, selection.max_comparisons, local_stats);
   Bar bar(atoms_of_input, selection);
-  std::vector<Hypothesis> found = searchBins(space, search, bar);
+  std::vector<Hypothesis> found = searchBins(space, search, bar, selection.every_result_from);
   if (stats != nullptr) {
     stats->votes += local_stats.votes;
     stats->bins += local_stats.bins;

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <tuple>
 
 #include "asr_common/input_error.hpp"
 #include "asr_ism_tree/estimate_matching.hpp"
 #include "asr_ism_tree/repeated_detections.hpp"
+#include "exact_best_search.hpp"
 
 namespace asr_ism_tree {
 
@@ -19,6 +21,24 @@ using asr_ism::IsmResult;
 struct EvaluatedIsm {
   std::vector<IsmResult> results;
   std::vector<int> input_origin;
+};
+
+// Thrown where the exact search would exceed its budget.
+struct ExactSearchTooLarge {};
+
+// What the exact search may still spend in one recognition, over all its labellings.
+struct ExactSearchBudget {
+  std::size_t max_votes;         // per evaluation of one ISM
+  std::size_t comparisons_left;  // vote-to-hypothesis comparisons
+  std::size_t comparisons_used = 0;
+};
+
+// The first evaluation (a few results per sub-ISM) and, where its best instance may not be the
+// exhaustive search's, the exact search's, whose root holds the results reaching the first best.
+struct TreeEvaluation {
+  std::vector<EvaluatedIsm> first;
+  std::vector<EvaluatedIsm> exact;
+  bool has_exact = false;
 };
 
 namespace {
@@ -89,6 +109,8 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
   for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
     levels_[levels_.size() - 1 - tree_.level[ism]].push_back(static_cast<int>(ism));
   }
+  for (const std::vector<int>& level : levels_)
+    bottom_up_.insert(bottom_up_.end(), level.begin(), level.end());
   for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
     const auto& members = tree_.isms[ism].members;
     for (std::size_t m = 0; m < members.size(); ++m) {
@@ -151,44 +173,132 @@ bool sameInstance(const SceneInstance& a, const SceneInstance& b) {
   return true;
 }
 
+// The root results that become instances: the first evaluation's, and the exact search's best
+// where it is better, in place of the first results it makes redundant (their estimates are all
+// among its own).
+std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>> rootResultsToAssemble(
+    const TreeEvaluation& evaluation) {
+  std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>> chosen;
+  const auto& first = evaluation.first[0].results;
+  const IsmResult* exact_best = evaluation.has_exact && !evaluation.exact[0].results.empty()
+                                    ? &evaluation.exact[0].results[0]
+                                    : nullptr;
+  if (exact_best != nullptr &&
+      (first.empty() || exact_best->objective > first.front().objective + 1e-9)) {
+    chosen.emplace_back(&evaluation.exact, 0);
+  } else {
+    exact_best = nullptr;
+  }
+  for (std::size_t r = 0; r < first.size(); ++r) {
+    const bool redundant = exact_best != nullptr &&
+                           std::includes(exact_best->estimates.begin(), exact_best->estimates.end(),
+                                         first[r].estimates.begin(), first[r].estimates.end());
+    if (!redundant)
+      chosen.emplace_back(&evaluation.first, r);
+  }
+  return chosen;
+}
+
 }  // namespace
 
-std::vector<EvaluatedIsm> TreeRecognizer::evaluateIsms(
-    const std::vector<Pose>& poses, const std::vector<std::vector<int>>& estimates_of_object,
-    TreeRecognitionStats* stats) const {
-  // Bottom-up evaluation (Algo. 2), level by level; the ISMs of one level are independent.
-  std::vector<EvaluatedIsm> evaluated(tree_.isms.size());
-  std::vector<asr_ism::IsmRecognitionStats> ism_stats(tree_.isms.size());
-  const auto evaluate = [&](int ism) {
-    const auto& members = tree_.isms[ism].members;
-    std::vector<IsmInput> inputs;
-    EvaluatedIsm& current = evaluated[ism];
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      if (members[m].isPlaceholder()) {
-        const auto& child_results = evaluated[members[m].child_ism].results;
-        for (std::size_t r = 0; r < child_results.size(); ++r) {
-          inputs.push_back({static_cast<int>(m), child_results[r].reference_pose,
-                            child_results[r].objective, child_results[r].estimates});
-          current.input_origin.push_back(static_cast<int>(r));
-        }
-        continue;
+void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>& evaluated,
+                                 const std::vector<Pose>& poses,
+                                 const std::vector<std::vector<int>>& estimates_of_object,
+                                 asr_ism::IsmRecognitionStats& stats,
+                                 ExactSearchBudget* budget) const {
+  const auto& members = tree_.isms[ism].members;
+  std::vector<IsmInput> inputs;
+  EvaluatedIsm& current = evaluated[ism];
+  current.input_origin.clear();
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    if (members[m].isPlaceholder()) {
+      const auto& child_results = evaluated[members[m].child_ism].results;
+      for (std::size_t r = 0; r < child_results.size(); ++r) {
+        inputs.push_back({static_cast<int>(m), child_results[r].reference_pose,
+                          child_results[r].objective, child_results[r].estimates});
+        current.input_origin.push_back(static_cast<int>(r));
       }
-      for (int estimate : estimates_of_object[tree_.topology.indexOf(members[m].object)]) {
-        inputs.push_back({static_cast<int>(m), poses[estimate], 1.0, {estimate}});
-        current.input_origin.push_back(estimate);
-      }
+      continue;
     }
-    asr_ism::IsmResultSelection selection;
-    selection.best_count = ism == 0 ? 0 : parameters_.results_passed_up;
-    current.results = asr_ism::recognizeIsm(tree_.isms[ism], inputs, tree_.parameters, selection,
-                                            &ism_stats[ism]);
+    for (int estimate : estimates_of_object[tree_.topology.indexOf(members[m].object)]) {
+      inputs.push_back({static_cast<int>(m), poses[estimate], 1.0, {estimate}});
+      current.input_origin.push_back(estimate);
+    }
+  }
+  asr_ism::IsmResultSelection selection;
+  if (ism != 0) {
+    selection.best_count = parameters_.results_passed_up;
+    selection.every_result_from = parameters_.pass_every_result ? 0.0 : from;
+  } else if (std::isfinite(from)) {
+    selection.at_least = from;
+  }
+  if (budget == nullptr) {
+    current.results =
+        asr_ism::recognizeIsm(tree_.isms[ism], inputs, tree_.parameters, selection, &stats);
+    return;
+  }
+  std::size_t votes = 0;
+  for (const IsmInput& input : inputs)
+    votes += members[input.member].relative_poses.size();
+  if (votes > budget->max_votes)
+    throw ExactSearchTooLarge{};
+  selection.max_comparisons = budget->comparisons_left;
+  asr_ism::IsmRecognitionStats spent;
+  try {
+    current.results =
+        asr_ism::recognizeIsm(tree_.isms[ism], inputs, tree_.parameters, selection, &spent);
+  } catch (const asr_ism::IsmWorkLimitExceeded&) {
+    budget->comparisons_used += budget->comparisons_left;
+    budget->comparisons_left = 0;
+    throw ExactSearchTooLarge{};
+  }
+  budget->comparisons_left -= spent.comparisons;
+  budget->comparisons_used += spent.comparisons;
+  stats.votes += spent.votes;
+  stats.bins += spent.bins;
+  stats.candidates += spent.candidates;
+  stats.comparisons += spent.comparisons;
+}
+
+TreeEvaluation TreeRecognizer::evaluateIsms(
+    const std::vector<Pose>& poses, const std::vector<std::vector<int>>& estimates_of_object,
+    TreeRecognitionStats* stats, ExactSearchBudget& budget) const {
+  // Bottom-up evaluation (Algo. 2), level by level; the ISMs of one level are independent.
+  TreeEvaluation evaluation;
+  std::vector<EvaluatedIsm>& evaluated = evaluation.first;
+  evaluated.resize(tree_.isms.size());
+  std::vector<asr_ism::IsmRecognitionStats> ism_stats(tree_.isms.size());
+  const auto evaluate = [&](int ism, double from) {
+    evaluateIsm(ism, from, evaluated, poses, estimates_of_object, ism_stats[ism]);
   };
+  constexpr double kOnlyTheBest = std::numeric_limits<double>::infinity();
   for (const std::vector<int>& level : levels_) {
     if (pool_ != nullptr && level.size() > 1) {
-      pool_->parallelFor(level.size(), [&](std::size_t i) { evaluate(level[i]); });
+      pool_->parallelFor(level.size(), [&](std::size_t i) { evaluate(level[i], kOnlyTheBest); });
     } else {
       for (int ism : level)
-        evaluate(ism);
+        evaluate(ism, kOnlyTheBest);
+    }
+  }
+  if (parameters_.exact_best && !parameters_.pass_every_result && tree_.isms.size() > 1) {
+    std::vector<bool> object_seen(tree_.objects().size());
+    for (std::size_t object = 0; object < object_seen.size(); ++object)
+      object_seen[object] = !estimates_of_object[object].empty();
+    evaluation.exact = evaluated;
+    const auto evaluate_exact = [&](int ism, double from) {
+      evaluateIsm(ism, from, evaluation.exact, poses, estimates_of_object, ism_stats[ism], &budget);
+    };
+    const auto best = [&](int ism) {
+      const auto& results = evaluation.exact[ism].results;
+      return results.empty() ? 0.0 : results.front().objective;
+    };
+    try {
+      evaluation.has_exact =
+          ExactBestSearch(tree_, std::move(object_seen), evaluate_exact, best).run(bottom_up_);
+    } catch (const ExactSearchTooLarge&) {
+      evaluation.has_exact = false;  // the first evaluation's best stands
+      if (stats != nullptr)
+        ++stats->exact_searches_given_up;
     }
   }
   if (stats != nullptr) {
@@ -200,7 +310,7 @@ std::vector<EvaluatedIsm> TreeRecognizer::evaluateIsms(
     }
     stats->root_results += evaluated[0].results.size();
   }
-  return evaluated;
+  return evaluation;
 }
 
 SceneInstance TreeRecognizer::assembleInstance(
@@ -275,9 +385,9 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
                                                      TreeRecognitionStats* stats) const {
   if (configuration.size() > parameters_.max_estimates) {
     throw asr_common::InputError("scene '" + tree_.scene +
-                              "': " + std::to_string(configuration.size()) +
-                              " object estimates, more than the configured maximum of " +
-                              std::to_string(parameters_.max_estimates) + " per recognition");
+                                 "': " + std::to_string(configuration.size()) +
+                                 " object estimates, more than the configured maximum of " +
+                                 std::to_string(parameters_.max_estimates) + " per recognition");
   }
   const std::vector<Pose> poses = validatedPoses(configuration);
   const std::vector<int> canonical = canonicalOrder(configuration, poses);
@@ -292,14 +402,16 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
   if (stats != nullptr)
     *stats = TreeRecognitionStats{};
   std::vector<SceneInstance> instances;
+  ExactSearchBudget budget{parameters_.exact_search_max_votes,
+                           parameters_.exact_search_max_comparisons};
   for (std::size_t labelling = 0; labelling < labellings; ++labelling) {
     auto estimates_of_object =
         matching.estimatesOfObjects(labelling, tree_.objects().size(), canonical);
     if (parameters_.merge_repeated_detections)
       mergeRepeated(estimates_of_object, poses, stats);
-    const std::vector<EvaluatedIsm> evaluated = evaluateIsms(poses, estimates_of_object, stats);
-    for (std::size_t r = 0; r < evaluated[0].results.size(); ++r) {
-      SceneInstance instance = assembleInstance(evaluated, r, poses, estimates_of_object);
+    const TreeEvaluation evaluation = evaluateIsms(poses, estimates_of_object, stats, budget);
+    for (const auto& [evaluated, r] : rootResultsToAssemble(evaluation)) {
+      SceneInstance instance = assembleInstance(*evaluated, r, poses, estimates_of_object);
       instance.ids_ignored = matching.ids_ignored;
       // One labelling cannot repeat an instance; only across labellings can one reappear.
       const bool known =
@@ -310,6 +422,8 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
         instances.push_back(std::move(instance));
     }
   }
+  if (stats != nullptr)
+    stats->exact_search_comparisons = budget.comparisons_used;
   // Best first; the root's order (which breaks ties by the model) within one labelling.
   std::stable_sort(instances.begin(), instances.end(), [](const auto& a, const auto& b) {
     return a.confidence > b.confidence + 1e-12;

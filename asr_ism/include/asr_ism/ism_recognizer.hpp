@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "asr_ism/ism.hpp"
@@ -65,6 +67,23 @@ struct IsmResultSelection {
   /// (one that matches every input around it, one per member, fully); a result at another pose is
   /// another placeholder for the parent even if it explains no new estimate.
   std::size_t best_count = 0;
+  /// Also return every hypothesis whose objective reaches this, however many, each with its exact
+  /// objective; of hypotheses at one pose (within 1e-12) only the best, since it serves a parent
+  /// at least as well. An exact search over a tree asks a sub-ISM for every result that could
+  /// still be part of a better instance (tree_recognizer.cpp). Infinity: none beyond the above.
+  double every_result_from = std::numeric_limits<double>::infinity();
+  /// Only results whose objective reaches this (the search skips everything below it).
+  double at_least = -std::numeric_limits<double>::infinity();
+  /// The search stops with IsmWorkLimitExceeded once it has made more vote-to-hypothesis
+  /// comparisons than this (IsmRecognitionStats::comparisons): a caller that can do without the
+  /// answer (the tree's exact search) bounds its cost by a count, not by the clock, so the
+  /// outcome does not depend on the machine.
+  std::size_t max_comparisons = std::numeric_limits<std::size_t>::max();
+};
+
+/// Thrown by recognizeIsm where IsmResultSelection::max_comparisons is exceeded.
+struct IsmWorkLimitExceeded : std::runtime_error {
+  IsmWorkLimitExceeded() : std::runtime_error("ISM recognition: work limit exceeded") {}
 };
 
 /// Work counts of a recognition, comparable across machines.

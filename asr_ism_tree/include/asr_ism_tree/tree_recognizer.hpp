@@ -28,14 +28,36 @@ struct TreeRecognitionParameters {
   /// instead of with the cube of their number. false: every estimate enters (the exhaustive
   /// search, with which every combination of repeated detections is tried).
   bool merge_repeated_detections = true;
+  /// Makes the best instance that of the exhaustive search (`pass_every_result`): after the first
+  /// evaluation, every sub-ISM is asked for every further result that could still be part of a
+  /// better instance (exact_best_search.hpp). Seeing an object badly then never scores lower than
+  /// not seeing it. false: the best instance of the `results_passed_up` best results alone.
+  bool exact_best = true;
+  /// The exact search gives up (and the first evaluation's best stands) where it would cast more
+  /// votes than this in one ISM: near-duplicate results of sub-ISMs that all could still matter
+  /// multiply up the tree. TreeRecognitionStats::exact_searches_given_up counts such cases.
+  std::size_t exact_search_max_votes = 5000;
+  /// ... and where, over all its ISMs (and every assignment of id-less estimates), it would make
+  /// more vote-to-hypothesis comparisons than this in one recognition: the bound on its work, so
+  /// that no input can hold a caller for long (20-50 ns per comparison on the 2-core development
+  /// machine, so at most 0.1-0.25 s; `asr bench exact`, docs/recognition.md). A count, not a
+  /// clock: the outcome does not depend on the machine or its load.
+  std::size_t exact_search_max_comparisons = 5000000;
+  /// Every sub-ISM passes every result up (of results at one pose, the best): the exhaustive
+  /// search, slow beyond small scenes; what the exact search is tested against.
+  bool pass_every_result = false;
 };
 
 struct EvaluatedIsm;
+struct TreeEvaluation;
+struct ExactSearchBudget;
 
 struct TreeRecognitionStats {
   asr_ism::IsmRecognitionStats isms;  // summed over the tree's ISMs
   std::size_t root_results = 0;
-  std::size_t merged_estimates = 0;  // repeated detections left out, summed over labellings
+  std::size_t merged_estimates = 0;          // repeated detections left out, summed over labellings
+  std::size_t exact_searches_given_up = 0;   // over labellings
+  std::size_t exact_search_comparisons = 0;  // spent by the exact search (within isms as well)
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
@@ -72,9 +94,13 @@ class TreeRecognizer {
     int object;  // index in tree.objects()
   };
 
-  std::vector<EvaluatedIsm> evaluateIsms(const std::vector<Pose>& poses,
-                                         const std::vector<std::vector<int>>& estimates_of_object,
-                                         TreeRecognitionStats* stats) const;
+  void evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>& evaluated,
+                   const std::vector<Pose>& poses,
+                   const std::vector<std::vector<int>>& estimates_of_object,
+                   asr_ism::IsmRecognitionStats& stats, ExactSearchBudget* budget = nullptr) const;
+  TreeEvaluation evaluateIsms(const std::vector<Pose>& poses,
+                              const std::vector<std::vector<int>>& estimates_of_object,
+                              TreeRecognitionStats* stats, ExactSearchBudget& budget) const;
   // Per object, one estimate for each group of repeated detections.
   void mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
                      const std::vector<Pose>& poses, TreeRecognitionStats* stats) const;
@@ -86,6 +112,7 @@ class TreeRecognizer {
   TreeRecognitionParameters parameters_;
   asr_ism::ThreadPool* pool_;
   std::vector<std::vector<int>> levels_;  // ISM indices per level, deepest level first
+  std::vector<int> bottom_up_;            // the levels in that order
   std::vector<Leaf> leaves_;
 };
 

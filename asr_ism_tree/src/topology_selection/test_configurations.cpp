@@ -53,6 +53,12 @@ Configuration drawConfiguration(const Demonstration& demonstration, std::size_t 
 
 }  // namespace
 
+TreeRecognitionParameters selectionRecognitionParameters() {
+  TreeRecognitionParameters parameters;
+  parameters.exact_best = false;
+  return parameters;
+}
+
 TestConfigurations generateTestConfigurations(const Demonstration& demonstration,
                                               const IsmTree& complete_tree, std::size_t count,
                                               std::uint32_t seed, double threshold) {
@@ -70,7 +76,7 @@ TestConfigurations generateTestConfigurations(const Demonstration& demonstration
                      "': no time step shows two objects, so no test configuration can be made");
 
   asr_ism::PortableRandom random(seed);
-  const TreeRecognizer recognizer(complete_tree);
+  const TreeRecognizer recognizer(complete_tree, selectionRecognitionParameters());
   TestConfigurations tests;
   tests.scene = demonstration.scene();
   for (std::size_t i = 0; i < count; ++i) {

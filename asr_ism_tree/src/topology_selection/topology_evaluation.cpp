@@ -12,7 +12,7 @@ TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
                                   const asr_ism::IsmRecognitionParameters& parameters,
                                   double threshold, double max_mean_work) {
   const IsmTree tree = generateIsmTree(demonstration, topology, parameters);
-  const TreeRecognizer recognizer(tree);
+  const TreeRecognizer recognizer(tree, selectionRecognitionParameters());
   TopologyMeasures measures;
   measures.relations = topology.relationCount();
   measures.isms = tree.isms.size();

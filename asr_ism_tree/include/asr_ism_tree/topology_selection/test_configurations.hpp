@@ -6,6 +6,7 @@
 
 #include "asr_ism/demonstration.hpp"
 #include "asr_ism_tree/ism_tree.hpp"
+#include "asr_ism_tree/tree_recognizer.hpp"
 
 namespace asr_ism_tree {
 
@@ -17,6 +18,13 @@ struct TestConfigurations {
   std::vector<asr_common::Configuration> invalid;
   std::size_t size() const { return valid.size() + invalid.size(); }
 };
+
+/// How topology selection recognises (labelling test configurations, evaluating topologies): the
+/// first evaluation only, without the exact search (TreeRecognitionParameters::exact_best). It
+/// recognises thousands of configurations, most of them invalid ones far from every demonstrated
+/// pose, where the exact search's bound is loosest; and the false positives it counts are those
+/// of the best few results per sub-ISM, as the paper's selection measured them.
+TreeRecognitionParameters selectionRecognitionParameters();
 
 /// Generates `count` configurations from the demonstration (seeded, the same on every platform):
 /// each keeps one random object at its pose of a random time step and places every other object
