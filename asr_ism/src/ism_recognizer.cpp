@@ -132,17 +132,14 @@ class CoincidentVotes {
     // position compliance 1 - d^2 / r^2 may miss 1 by at most 2 levels / weight
     reach_ = support_radius * std::sqrt(2.0 * kBoundMargin / min_weight);
     usable_ = reach_ < 0.01 * support_radius;
-    if (!usable_)
-      return;
-    cells_.reserve(votes.px.size());
-    for (std::uint32_t v = 0; v < votes.px.size(); ++v)
-      cells_[cellOf(votes.px[v], votes.py[v], votes.pz[v])].push_back(v);
   }
 
   // Whether every member in `members` has a vote within reach of vote c.
   bool allMembersOn(std::uint32_t c, const std::vector<int>& members) {
     if (!usable_)
       return true;
+    if (cells_.empty())
+      indexCells();
     ++stamp_;
     std::size_t found = 0;
     const double x = votes_.px[c], y = votes_.py[c], z = votes_.pz[c];
@@ -154,10 +151,11 @@ class CoincidentVotes {
       const Cell cell = {own[0] + ((corner & 1) ? step[0] : 0),
                          own[1] + ((corner & 2) ? step[1] : 0),
                          own[2] + ((corner & 4) ? step[2] : 0)};
-      const auto it = cells_.find(cell);
-      if (it == cells_.end())
-        continue;
-      for (std::uint32_t v : it->second) {
+      const auto [first, last] =
+          std::equal_range(cells_.begin(), cells_.end(), std::make_pair(cell, std::uint32_t{0}),
+                           [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (auto it = first; it != last; ++it) {
+        const std::uint32_t v = it->second;
         const double dx = votes_.px[v] - x, dy = votes_.py[v] - y, dz = votes_.pz[v] - z;
         const int m = votes_.member[v];
         if (dx * dx + dy * dy + dz * dz <= reach_ * reach_ && member_stamp_[m] != stamp_) {
@@ -171,11 +169,15 @@ class CoincidentVotes {
 
  private:
   using Cell = std::array<std::int64_t, 3>;
-  struct CellHash {
-    std::size_t operator()(const Cell& cell) const {
-      return static_cast<std::size_t>(cell[0] * 73856093 ^ cell[1] * 19349663 ^ cell[2] * 83492791);
-    }
-  };
+
+  // Every vote by its cell, sorted: one allocation, built only where a bin asks (an index per
+  // call of the recogniser cost more than the search of a small ISM).
+  void indexCells() {
+    cells_.reserve(votes_.px.size());
+    for (std::uint32_t v = 0; v < votes_.px.size(); ++v)
+      cells_.emplace_back(cellOf(votes_.px[v], votes_.py[v], votes_.pz[v]), v);
+    std::sort(cells_.begin(), cells_.end());
+  }
 
   Cell cellOf(double x, double y, double z) const {
     return {static_cast<std::int64_t>(std::floor(x / reach_)),
@@ -189,7 +191,7 @@ class CoincidentVotes {
   const Votes& votes_;
   double reach_ = 0.0;
   bool usable_ = false;
-  std::unordered_map<Cell, std::vector<std::uint32_t>, CellHash> cells_;
+  std::vector<std::pair<Cell, std::uint32_t>> cells_;
   std::vector<std::uint32_t> member_stamp_;
   std::uint32_t stamp_ = 0;
 };
@@ -197,7 +199,7 @@ class CoincidentVotes {
 class Search {
  public:
   Search(const Ism& ism, const Votes& votes, const std::vector<std::vector<int>>& atoms_of_input,
-         const IsmRecognitionParameters& parameters, std::size_t max_comparisons,
+         const IsmRecognitionParameters& parameters, const IsmResultSelection& selection,
          IsmRecognitionStats& stats)
       : votes_(votes),
         coincident_(votes, parameters.supportRadius(), ism.members.size()),
@@ -205,7 +207,8 @@ class Search {
         member_count_(ism.members.size()),
         reference_member_(referenceMember(ism)),
         stats_(stats),
-        max_comparisons_(max_comparisons),
+        max_comparisons_(selection.max_comparisons),
+        perfect_results_matter_(selection.best_count > 0),
         support_radius_squared_(parameters.supportRadius() * parameters.supportRadius()),
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         sin_half_squared_max_angle_(sinHalfSquared(cos_half_max_angle_)) {
@@ -280,10 +283,12 @@ class Search {
     // itself prefers (the reference's own vote first), not the one the bin layout puts first.
     std::sort(n.candidates.begin(), n.candidates.end(),
               [&](std::uint32_t a, std::uint32_t b) { return votes_.keyLess(a, b); });
+    // Only a sub-ISM's bar waits for perfect results; at the root the test would be wasted.
     n.may_hold_perfect =
         n.one_input_per_member &&
-        std::any_of(n.candidates.begin(), n.candidates.end(),
-                    [&](std::uint32_t c) { return coincident_.allMembersOn(c, n.members); });
+        (!perfect_results_matter_ ||
+         std::any_of(n.candidates.begin(), n.candidates.end(),
+                     [&](std::uint32_t c) { return coincident_.allMembersOn(c, n.members); }));
   }
 
   // Evaluates the hypotheses of one bin in key order and passes each that may still be selected
@@ -407,6 +412,7 @@ class Search {
   const int reference_member_;
   IsmRecognitionStats& stats_;
   const std::size_t max_comparisons_;
+  const bool perfect_results_matter_;
   const double support_radius_squared_;
   const double cos_half_max_angle_;
   const double sin_half_squared_max_angle_;
@@ -718,6 +724,7 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
   std::unordered_map<std::vector<int>, bool, AssignmentHash> seen;
   std::vector<std::vector<int>> kept_atoms;
   std::unordered_set<PoseKey, PoseKeyHash> poses_taken;
+  const bool wants_every = std::isfinite(selection.every_result_from);
   for (Hypothesis& hypothesis : found) {
     const bool capped = selection.best_count > 0 && best_taken >= selection.best_count;
     if ((capped && hypothesis.objective < every_from) ||
@@ -730,8 +737,9 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
         return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
       });
     }
-    const PoseKey pose = poseKey(votes, hypothesis.candidate);
-    const bool pose_new = poses_taken.insert(pose).second;
+    // Poses matter only where every result reaching every_from is wanted.
+    const bool pose_new =
+        wants_every && poses_taken.insert(poseKey(votes, hypothesis.candidate)).second;
     if (!as_best && !(hypothesis.objective >= every_from && pose_new))
       continue;
     if (as_best) {
@@ -760,7 +768,7 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
   local_stats.votes = votes.px.size();
   local_stats.bins = space.bins().size();
   const std::vector<std::vector<int>> atoms_of_input = atomsOfInputs(inputs);
-  Search search(ism, votes, atoms_of_input, parameters, selection.max_comparisons, local_stats);
+  Search search(ism, votes, atoms_of_input, parameters, selection, local_stats);
   Bar bar(atoms_of_input, selection);
   std::vector<Hypothesis> found = searchBins(space, search, bar, selection.every_result_from);
   if (stats != nullptr) {
