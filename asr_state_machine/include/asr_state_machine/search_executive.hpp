@@ -54,6 +54,7 @@ struct SearchResult {
   std::vector<double> decision_compute_seconds;
   WorldModel world;
   std::vector<LogEntry> log;
+  RobotState start;  // where the robot began (the path goes on through the visited views)
 };
 
 struct SearchParts {
