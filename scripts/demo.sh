@@ -52,9 +52,9 @@ if [ -f "$ROOT/asr_state_machine/launch/search.launch" ]; then
   done
   # The search's own topics and the robot's; subscribed before the graph starts, so nothing of
   # the search is missed.
-  rosbag record --quiet -O "$OUT/search.bag" /search_log /search_executive/state \
-    /search_executive/result /search_markers /tf /tf_static /clock /joint_states \
-    >"$OUT/rosbag.log" 2>&1 &
+  rosbag record --quiet -O "$OUT/search.bag" /clock /tf /tf_static /joint_states /robot_state \
+    /objects /search_log /search_executive/state /search_executive/result /search_markers \
+    /world_markers /scene_markers /prediction_markers /nbv_markers >"$OUT/rosbag.log" 2>&1 &
   recorder=$!
   roslaunch asr_state_machine search.launch world:="$WORLD" model_files:="[$MODELS]" \
     seed:="$SEED" rviz:=false exit_when_done:=true result_file:="$OUT/result.json" \
@@ -79,5 +79,5 @@ for file in result.json search_log.jsonl search.bag search.png; do
   if [ -f "$OUT/$file" ]; then echo "  $file"; fi
 done
 if [ -f "$OUT/search.bag" ]; then
-  echo "Replay: rosbag play --clock $OUT/search.bag (and rviz -d asr_state_machine/launch/search.rviz)"
+  echo "Replay (the bag holds the search's /clock): rosparam set use_sim_time true; rosbag play $OUT/search.bag; rviz -d asr_state_machine/launch/search.rviz"
 fi

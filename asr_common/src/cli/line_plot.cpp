@@ -35,7 +35,8 @@ std::string plotScript(const LinePlot& plot, const std::string& output) {
     script << "set xrange [0.5:" << plot.x_tic_labels.size() + 0.5 << "]\nset xtics (";
     for (std::size_t i = 0; i < plot.x_tic_labels.size(); ++i)
       script << (i ? ", " : "") << gnuplotQuoted(plot.x_tic_labels[i]) << " " << i + 1;
-    script << ")\n";
+    // Categories fall from left to right in the suite's plots: the key goes where they do not.
+    script << ")\nset key top right\n";
   }
   std::string command = "plot ";
   for (std::size_t i = 0; i < plot.curves.size(); ++i) {
