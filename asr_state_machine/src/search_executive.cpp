@@ -307,6 +307,8 @@ SearchExecutive::State SearchExecutive::finish(Outcome outcome, const std::strin
 void SearchExecutive::log(const std::string& event, const std::string& detail,
                           double compute_seconds) {
   result_.log.push_back({result_.sim_seconds, stateName(state_), event, detail, compute_seconds});
+  if (log_listener_)
+    log_listener_(result_.log.back(), result_.world);
 }
 
 void SearchExecutive::decided(double compute_seconds) {
