@@ -1,9 +1,13 @@
-// The whole graph of search.launch on the kitchen (rostest): the search_executive over the
-// simulated robot, detector, scene_recognizer, pose_predictor and next_best_view ends
+// The whole graph of search.launch on the kitchen (rostest, search.test): the search_executive over
+// the simulated robot, detector, scene_recognizer, pose_predictor and next_best_view ends
 // found_all_objects; every scene object is found where the world has it; the published summary
 // is what `asr search --json` gives (same fields), its log is the JSON-lines log file, and the
-// latched state says the outcome. Waits are wall-clock hang guards only: the search runs on
-// simulated time.
+// latched state says the outcome. A service call of a part ends in a PartFailure naming the
+// node when the service is gone or stalls. search_bad_input.test: a scene no model holds is
+// refused before anything moves, on ~result. Waits are wall-clock hang guards only: the search
+// runs on simulated time.
+#include <asr_msgs/ResetNbvHypotheses.h>
+#include <asr_msgs/RobotState.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <std_msgs/String.h>
@@ -17,6 +21,7 @@
 #include "asr_ism_tree/scene_models.hpp"
 #include "asr_robot_model/robot_description.hpp"
 #include "asr_robot_model/world.hpp"
+#include "asr_state_machine/ros/timed_service_call.hpp"
 
 namespace asr_state_machine {
 namespace {
@@ -107,6 +112,81 @@ TEST_F(SearchLaunchTest, TheLogFileHoldsEveryDecisionOfThePublishedLog) {
     EXPECT_GE(lines[i]["t"].get<double>(), previous) << "simulated time runs backwards at " << i;
     previous = lines[i]["t"];
   }
+}
+
+// Any service will do: the test's own, which stalls for as long as it is told to.
+class PartCalls : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    spinner_.start();
+    service_ = node_.advertiseService<asr_msgs::ResetNbvHypotheses::Request,
+                                      asr_msgs::ResetNbvHypotheses::Response>(
+        "stalling_service", [this](auto&, auto& response) {
+          ros::WallDuration(stall_seconds_).sleep();
+          response.hypotheses = 7;
+          return true;
+        });
+  }
+
+  ros::NodeHandle node_;
+  ros::AsyncSpinner spinner_{1};
+  ros::ServiceServer service_;
+  double stall_seconds_ = 0.0;
+};
+
+TEST_F(PartCalls, AnAnswerInTimeIsReturned) {
+  asr_msgs::ResetNbvHypotheses call;
+  ros_interface::callService({"test_node", 30.0}, "stalling_service", call);
+  EXPECT_EQ(call.response.hypotheses, 7u);
+}
+
+TEST_F(PartCalls, AStalledNodeIsAPartFailureNamingIt) {
+  stall_seconds_ = 3.0;
+  asr_msgs::ResetNbvHypotheses call;
+  try {
+    ros_interface::callService({"test_node", 0.5}, "stalling_service", call);
+    FAIL() << "no PartFailure";
+  } catch (const PartFailure& failure) {
+    EXPECT_EQ(failure.part(), "test_node");
+    EXPECT_NE(std::string(failure.what()).find("did not answer within"), std::string::npos)
+        << failure.what();
+  }
+}
+
+TEST_F(PartCalls, AServiceThatIsGoneIsAPartFailureNamingIt) {
+  asr_msgs::ResetNbvHypotheses call;
+  try {
+    ros_interface::callService({"nowhere", 30.0}, "no_such_service", call);
+    FAIL() << "no PartFailure";
+  } catch (const PartFailure& failure) {
+    EXPECT_EQ(failure.part(), "nowhere");
+    EXPECT_NE(std::string(failure.what()).find("is gone"), std::string::npos) << failure.what();
+  }
+}
+
+// search_bad_input.test: scenes:=[lunch], which no model holds.
+TEST(BadInput, ASceneNoModelHoldsIsRefusedBeforeAnythingMoves) {
+  ros::NodeHandle node;
+  std::optional<std::string> result;
+  std::optional<asr_msgs::RobotState> start;
+  ros::Subscriber result_subscriber = node.subscribe<std_msgs::String>(
+      "search_executive/result", 1,
+      [&](const std_msgs::StringConstPtr& message) { result = message->data; });
+  ASSERT_TRUE(waitFor([&] { return result.has_value(); }, kHangGuardSeconds));
+  const nlohmann::json refused = nlohmann::json::parse(*result);
+  EXPECT_EQ(refused["outcome"], "error");
+  EXPECT_NE(refused["reason"].get<std::string>().find("'lunch'"), std::string::npos) << *result;
+  // The robot is where the world starts it: nothing moved.
+  ros::Subscriber state_subscriber = node.subscribe<asr_msgs::RobotState>(
+      "robot_state", 1, [&](const asr_msgs::RobotStateConstPtr& message) { start = *message; });
+  ASSERT_TRUE(waitFor([&] { return start.has_value(); }, kHangGuardSeconds));
+  const auto catalogue =
+      asr_robot_model::loadObjectCatalogue(asr_robot_model::defaultObjectCatalogue());
+  const asr_robot_model::World world =
+      asr_robot_model::loadWorld(privateParameter("world"), catalogue);
+  EXPECT_DOUBLE_EQ(start->x, world.robot.x);
+  EXPECT_DOUBLE_EQ(start->y, world.robot.y);
+  EXPECT_DOUBLE_EQ(start->yaw, world.robot.yaw);
 }
 
 }  // namespace

@@ -42,14 +42,15 @@ void throwIfRefused(const PartEndpoint& part, const std::string& service,
 
 }  // namespace
 
-void waitForServices(const PartEndpoint& part, const std::vector<std::string>& services) {
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(part.timeout);
+void waitForServices(const PartEndpoint& part, const std::vector<std::string>& services,
+                     double timeout) {
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(timeout);
   for (const std::string& service : services) {
     const std::string resolved = ros::NodeHandle().resolveName(service);
     while (!ros::service::exists(resolved, false)) {
       if (!ros::ok() || ros::WallTime::now() > deadline) {
         throw PartFailure(part.node, "service " + resolved + " did not appear within " +
-                                         std::to_string(static_cast<int>(part.timeout)) + " s");
+                                         std::to_string(static_cast<int>(timeout)) + " s");
       }
       ros::WallDuration(0.1).sleep();
     }
@@ -57,10 +58,10 @@ void waitForServices(const PartEndpoint& part, const std::vector<std::string>& s
 }
 
 RosRobot::RosRobot(ros::NodeHandle& node, const asr_robot_model::RobotDescription& robot,
-                   PartEndpoint part)
+                   PartEndpoint part, double startup_timeout)
     : robot_(robot), part_(std::move(part)), client_(node, "move_robot", true) {
   state_subscriber_ = node.subscribe("robot_state", 1, &RosRobot::onState, this);
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(part_.timeout);
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(startup_timeout);
   while (!client_.isServerConnected() || !state_) {
     if (!ros::ok() || ros::WallTime::now() > deadline) {
       throw PartFailure(part_.node, client_.isServerConnected()

@@ -62,6 +62,7 @@ SearchRequest SearchExecutiveNode::readRequest() {
   request.config.required_scenes = requiredScenesParameter(p);
   frame_ = fixedFrameParameter(p);
   part_timeout_ = numberParameter(p, "part_timeout", 60.0, 0.1, 1e6);
+  startup_timeout_ = numberParameter(p, "startup_timeout", 300.0, 0.1, 1e6);
   samples_ = static_cast<std::size_t>(integerParameter(p, "samples", 60, 1, 100000));
   best_instances_ = static_cast<std::size_t>(integerParameter(p, "best_instances", 3, 1, 1000));
   result_file_ = optionalParameter<std::string>(p, "result_file", "");
@@ -103,13 +104,15 @@ SearchResult SearchExecutiveNode::search(const SearchInputs& inputs) {
     publishEntry(entry, world, inputs);
   };
   try {
-    waitForServices(detector_part, {"detect_objects"});
-    waitForServices(recognizer_part, {"recognize_scenes"});
+    waitForServices(detector_part, {"detect_objects"}, startup_timeout_);
+    waitForServices(recognizer_part, {"recognize_scenes"}, startup_timeout_);
     if (inputs.config.mode != SearchMode::kBoundingBox)
-      waitForServices(predictor_part, {"predict_poses"});
-    waitForServices(planner_part, {"set_nbv_hypotheses", "get_next_best_view",
-                                   "update_nbv_hypotheses", "remove_nbv_objects"});
-    RosRobot robot(node_, inputs.robot, robot_part);
+      waitForServices(predictor_part, {"predict_poses"}, startup_timeout_);
+    waitForServices(
+        planner_part,
+        {"set_nbv_hypotheses", "get_next_best_view", "update_nbv_hypotheses", "remove_nbv_objects"},
+        startup_timeout_);
+    RosRobot robot(node_, inputs.robot, robot_part, startup_timeout_);
     RosDetector detector(frame_, detector_part);
     std::map<std::string, std::vector<ObjectKey>> scene_objects;
     for (const std::string& scene : inputs.models.scenes())

@@ -28,9 +28,9 @@ namespace asr_state_machine::ros_interface {
 /// progress (feedback), so long motions on a slow clock are fine while a stalled driver is not.
 class RosRobot : public Robot {
  public:
-  /// Waits up to part.timeout wall seconds for the driver's action server and robot state.
-  RosRobot(ros::NodeHandle& node, const asr_robot_model::RobotDescription& robot,
-           PartEndpoint part);
+  /// Waits up to `startup_timeout` wall seconds for the driver's action server and robot state.
+  RosRobot(ros::NodeHandle& node, const asr_robot_model::RobotDescription& robot, PartEndpoint part,
+           double startup_timeout);
   RobotState state() override;
   MoveResult moveTo(const RobotState& goal) override;
 
@@ -106,8 +106,9 @@ class RosViewPlanner : public ViewPlanner {
   PartEndpoint part_;
 };
 
-/// Waits up to part.timeout wall seconds for each of `services`; throws PartFailure naming
-/// the node and the first service missing.
-void waitForServices(const PartEndpoint& part, const std::vector<std::string>& services);
+/// Waits up to `timeout` wall seconds for each of `services`; throws PartFailure naming the
+/// node and the first service missing.
+void waitForServices(const PartEndpoint& part, const std::vector<std::string>& services,
+                     double timeout);
 
 }  // namespace asr_state_machine::ros_interface

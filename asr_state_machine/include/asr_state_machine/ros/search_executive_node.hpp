@@ -45,6 +45,7 @@ class SearchExecutiveNode {
   ros::Publisher markers_;
   std::string frame_;
   double part_timeout_ = 60.0;
+  double startup_timeout_ = 300.0;
   std::size_t samples_ = 60;
   std::size_t best_instances_ = 3;
   std::string result_file_;
