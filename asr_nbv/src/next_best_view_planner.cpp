@@ -5,6 +5,8 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <queue>
+#include <tuple>
 
 #include "asr_robot_model/forward_kinematics.hpp"
 #include "asr_robot_model/motion_model.hpp"
@@ -13,17 +15,39 @@ namespace asr_nbv {
 
 using asr_robot_model::RobotState;
 
-// A view with something to see: where, which way, and its utility per type (sparse).
+// A view with something to see: where, which way, and its utility per type (sparse) by the
+// first pass's bounds; the exact utility and the rating's bound once computed.
 struct NextBestViewPlanner::Candidate {
   std::size_t position = 0;
   std::size_t orientation = 0;
   std::vector<std::pair<int, double>> per_type;
   double total = 0.0;
+  std::vector<double> exact;  // per type, occlusion included
+  double exact_total = -1.0;  // < 0: not computed yet
+  double bound = -1.0;        // of the rating; < 0: never chosen
 };
 
 struct NextBestViewPlanner::Step {
   bool found = false;
   PlannedView view;
+};
+
+// What the candidates of one step share while they are rated.
+struct NextBestViewPlanner::StepState {
+  StepState(const std::vector<Eigen::Vector2d>& at, const RobotState& from)
+      : positions(at), current(from) {}
+  const std::vector<Eigen::Vector2d>& positions;
+  const RobotState& current;
+  std::vector<Eigen::Vector3d> points;  // the hypotheses' positions, packed
+  std::vector<std::vector<std::size_t>> nearby;
+  std::vector<std::vector<Candidate>> candidates;  // per position, once expanded
+  std::vector<char> expanded;
+  // Lines of sight from a camera position (lattice point and tilt level's height) to its
+  // nearby hypotheses, cast once for all the orientations rated there.
+  std::vector<std::vector<signed char>> sight;
+  std::size_t type_count = 0;  // types that still count
+  double utility_max = 0.0;
+  bool worth_moving = false;
 };
 
 namespace {
@@ -117,7 +141,7 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
                                          const asr_robot_model::World& world,
                                          const asr_robot_model::WorldMap& map,
                                          NbvParameters parameters, asr_ism::ThreadPool* pool,
-                                         unsigned seed)
+                                         unsigned seed, CandidateSearch search)
     : robot_(robot),
       kinematics_(robot, asr_robot_model::speedsOf(robot), kHeightTolerance),
       world_(world),
@@ -127,7 +151,8 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
       orientations_(robot, parameters_.orientation_step, seed),
       orientation_bound_(parameters_.rating_angle),
       side_bound_(std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0),
-      proximity_bound_((parameters_.frustum.far() - parameters_.frustum.near()) / 2.0) {
+      proximity_bound_((parameters_.frustum.far() - parameters_.frustum.near()) / 2.0),
+      search_(search) {
   checkNbvParameters(parameters_);
   const double side_angle = std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0;
   for (const TiltLevel& level : orientations_.levels()) {
@@ -268,141 +293,300 @@ std::vector<double> NextBestViewPlanner::occludedUtility(const HypothesisSet& hy
   return per_type;
 }
 
+void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
+                                        const std::vector<Eigen::Vector3d>& points,
+                                        const std::vector<std::size_t>& nearby,
+                                        const Eigen::Vector2d& position,
+                                        std::vector<double>& per_type) const {
+  // The first pass's side term is at most 1 plus its table's margin: this factor covers it and
+  // the rounding of the sums.
+  constexpr double kMargin = 1.0 + 1e-6;
+  const asr_robot_model::Frustum& frustum = parameters_.frustum;
+  const double side_cosine = std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
+  const double reach = frustum.far() / side_cosine;
+  const double middle = (frustum.near() + frustum.far()) / 2.0;
+  const std::vector<TiltLevel>& levels = orientations_.levels();
+  per_type.assign(hypotheses.types().size(), 0.0);
+  for (std::size_t index : nearby) {
+    const Eigen::Vector3d& point = points[index];
+    const double horizontal = (point.head<2>() - position).norm();
+    double best = 0.0;
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+      // As in utilitiesAt: the levels that can see the hypothesis at all.
+      const double rise = point.z() - levels[l].camera_height;
+      if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
+        continue;
+      const Eigen::Vector3d offset =
+          point - Eigen::Vector3d(position.x(), position.y(), levels[l].camera_height);
+      const double distance = offset.norm();
+      if (distance <= frustum.near() || distance >= reach)
+        continue;
+      // Seen within the side angle, its depth lies in [side_cosine, 1] x distance.
+      const double low = side_cosine * distance;
+      const double gap = middle < low ? low - middle : std::max(0.0, middle - distance);
+      best = std::max(best, orientationBound(hypotheses.hypotheses()[index], offset, distance) *
+                                proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9)));
+    }
+    per_type[hypotheses.hypotheses()[index].type] += kMargin * best;
+  }
+}
+
+namespace {
+
+// Indices of `values` >= 0 in falling order of value, ties in index order.
+std::vector<std::size_t> fallingOrder(const std::vector<double>& values) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (values[i] >= 0.0)
+      order.push_back(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return values[a] > values[b]; });
+  return order;
+}
+
+// A candidate waiting to be rated, in the order of the exhaustive search over bounds: falling
+// bound, then position, then its index at the position.
+struct Queued {
+  double bound;
+  std::size_t position, index;
+  bool operator<(const Queued& other) const {  // "rated after" for std::priority_queue
+    if (bound != other.bound)
+      return bound < other.bound;
+    return std::tie(position, index) > std::tie(other.position, other.index);
+  }
+};
+
+}  // namespace
+
 NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
+    const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
+    const RobotState& current) const {
+  if (search_ == CandidateSearch::exhaustive)
+    return rateStepExhaustively(hypotheses, positions, current);
+  StepState state = startStep(hypotheses, positions, current);
+  // Branch and bound over the positions: a bound per position and type first (cheap, one term
+  // per hypothesis), then the first pass (every orientation) only where the bound can still win.
+  const std::size_t count = positions.size();
+  std::vector<std::vector<double>> type_bound(count);
+  std::vector<double> total_bound(count, -1.0);
+  forEachPosition(count, [&](std::size_t p) {
+    if (state.nearby[p].empty())
+      return;
+    positionBound(hypotheses, state.points, state.nearby[p], positions[p], type_bound[p]);
+    total_bound[p] = std::accumulate(type_bound[p].begin(), type_bound[p].end(), 0.0);
+  });
+
+  // The normaliser: the largest exact utility. Occlusion only lowers utilities, so the first
+  // pass bounds them: lines of sight are cast only where the bound exceeds the best so far.
+  const std::vector<std::size_t> by_utility = fallingOrder(total_bound);
+  double& utility_max = state.utility_max;
+  auto may_exceed = [&](std::size_t p) { return total_bound[p] > utility_max; };
+  for (std::size_t next = 0; next < by_utility.size() && may_exceed(by_utility[next]);) {
+    const std::size_t end = expand(hypotheses, state, by_utility, next, may_exceed);
+    for (; next < end; ++next)
+      for (Candidate& candidate : state.candidates[by_utility[next]])
+        if (candidate.total > utility_max)
+          utility_max = std::max(utility_max, exactUtility(hypotheses, state, candidate));
+  }
+  Step step;
+  if (utility_max <= 0.0)
+    return step;
+  state.worth_moving = utility_max > parameters_.min_utility_for_moving;
+
+  // The rating: candidates in falling order of their bound (motion free, no occlusion) until
+  // none can beat the best; a position's bound (its types' bounds) is at least its candidates',
+  // so a position is expanded only once its bound reaches the best candidate waiting.
+  std::vector<double> position_rating(count, -1.0);
+  for (std::size_t p = 0; p < count; ++p)
+    if (total_bound[p] > 0.0 &&
+        !(state.worth_moving && total_bound[p] <= parameters_.min_utility_for_moving))
+      position_rating[p] = ratingBound(
+          bestTypeSubset(type_bound[p], utility_max, state.type_count, parameters_.weights),
+          positions[p], state);
+  const std::vector<std::size_t> by_rating = fallingOrder(position_rating);
+  std::priority_queue<Queued> queue;
+  std::vector<char> queued(count, 0);
+  double best_rating = -1.0;
+  std::size_t next = 0;
+  for (;;) {
+    auto wanted = [&](std::size_t p) {
+      return position_rating[p] > best_rating &&
+             (queue.empty() || position_rating[p] >= queue.top().bound);
+    };
+    while (next < by_rating.size() && wanted(by_rating[next])) {
+      const std::size_t end = expand(hypotheses, state, by_rating, next, wanted);
+      forEachPosition(end - next, [&](std::size_t i) {
+        boundCandidates(hypotheses, state, by_rating[next + i]);
+      });
+      for (; next < end; ++next) {
+        const std::size_t p = by_rating[next];
+        for (std::size_t k = 0; k < state.candidates[p].size(); ++k)
+          if (state.candidates[p][k].bound >= 0.0)
+            queue.push({state.candidates[p][k].bound, p, k});
+      }
+    }
+    if (queue.empty() || queue.top().bound <= best_rating)
+      break;
+    const Queued top = queue.top();
+    queue.pop();
+    rateCandidate(hypotheses, state, state.candidates[top.position][top.index], true, best_rating,
+                  step);
+  }
+  return step;
+}
+
+NextBestViewPlanner::Step NextBestViewPlanner::rateStepExhaustively(
+    const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
+    const RobotState& current) const {
+  StepState state = startStep(hypotheses, positions, current);
+  for (std::size_t p = 0; p < positions.size(); ++p) {
+    for (std::size_t o = 0; o < orientations_.size(); ++o) {
+      Candidate candidate;
+      candidate.position = p;
+      candidate.orientation = o;
+      state.utility_max = std::max(state.utility_max, exactUtility(hypotheses, state, candidate));
+      state.candidates[p].push_back(std::move(candidate));
+    }
+  }
+  Step step;
+  if (state.utility_max <= 0.0)
+    return step;
+  state.worth_moving = state.utility_max > parameters_.min_utility_for_moving;
+  double best_rating = -1.0;
+  for (auto& at_position : state.candidates)
+    for (Candidate& candidate : at_position)
+      rateCandidate(hypotheses, state, candidate, false, best_rating, step);
+  return step;
+}
+
+NextBestViewPlanner::StepState NextBestViewPlanner::startStep(
     const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
     const RobotState& current) const {
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
   const double reach = frustum.far() / std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
   const HypothesisGrid grid(hypotheses, reach);
-  // The positions packed, for the first pass's sweep over them.
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(hypotheses.hypotheses().size());
+  StepState state(positions, current);
+  state.type_count = hypotheses.countingTypes();
+  state.points.reserve(hypotheses.hypotheses().size());
   for (const Hypothesis& hypothesis : hypotheses.hypotheses())
-    points.push_back(hypothesis.box.pose.position);
-  std::vector<std::vector<std::size_t>> nearby(positions.size());
-  std::vector<std::vector<Candidate>> per_position(positions.size());
-  auto rate_position = [&](std::size_t p) {
-    nearby[p] = grid.near(hypotheses, positions[p], reach);
-    if (!nearby[p].empty())
-      utilitiesAt(hypotheses, points, nearby[p], positions[p], p, per_position[p]);
-  };
-  if (pool_ != nullptr)
-    pool_->parallelFor(positions.size(), rate_position);
-  else
-    for (std::size_t p = 0; p < positions.size(); ++p)
-      rate_position(p);
-
-  std::vector<Candidate> candidates;
-  for (auto& list : per_position)
-    for (Candidate& candidate : list)
-      candidates.push_back(std::move(candidate));
-  Step step;
-  if (candidates.empty())
-    return step;
-
-  // Occlusion only lowers utilities, so the utilities without it bound the exact ones: line of
-  // sight is checked only for the candidates whose bound can still win, best bound first.
-  std::vector<std::vector<double>> exact(candidates.size());
-  std::vector<double> exact_total(candidates.size(), -1.0);
-  // Lines of sight from a camera position (lattice point and tilt level's height) to its nearby
-  // hypotheses, cast once for all the orientations rated there.
-  const std::size_t level_count = orientations_.levels().size();
-  std::vector<std::vector<signed char>> sight(positions.size() * level_count);
-  auto exactUtility = [&](std::size_t c) {
-    if (exact_total[c] < 0.0) {
-      const Candidate& candidate = candidates[c];
-      exact[c] = occludedUtility(
-          hypotheses, nearby[candidate.position], cameraOf(candidate, positions),
-          sight[candidate.position * level_count + orientations_.levelOf(candidate.orientation)]);
-      exact_total[c] = std::accumulate(exact[c].begin(), exact[c].end(), 0.0);
-    }
-    return exact_total[c];
-  };
-  std::vector<std::size_t> by_utility(candidates.size());
-  std::iota(by_utility.begin(), by_utility.end(), 0);
-  std::stable_sort(by_utility.begin(), by_utility.end(), [&](std::size_t a, std::size_t b) {
-    return candidates[a].total > candidates[b].total;
+    state.points.push_back(hypothesis.box.pose.position);
+  state.nearby.resize(positions.size());
+  forEachPosition(positions.size(), [&](std::size_t p) {
+    state.nearby[p] = grid.near(hypotheses, positions[p], reach);
   });
-  double utility_max = 0.0;
-  for (std::size_t c : by_utility) {
-    if (candidates[c].total <= utility_max)
-      break;
-    utility_max = std::max(utility_max, exactUtility(c));
-  }
-  if (utility_max <= 0.0)
-    return step;
-  const bool worth_moving = utility_max > parameters_.min_utility_for_moving;
+  state.candidates.resize(positions.size());
+  state.expanded.assign(positions.size(), 0);
+  state.sight.resize(positions.size() * orientations_.levels().size());
+  return state;
+}
 
-  // Types and the rating's upper bound (motion free, no occlusion) per candidate, then exact
-  // utility and inverse kinematics in falling order of the bound until none can beat the best.
-  const RatingWeights& weights = parameters_.weights;
-  const std::size_t type_count = hypotheses.countingTypes();
-  std::vector<double> bounds(candidates.size(), -1.0);
-  std::vector<double> dense(hypotheses.types().size());
+void NextBestViewPlanner::forEachPosition(std::size_t count,
+                                          const std::function<void(std::size_t)>& task) const {
+  if (pool_ != nullptr)
+    pool_->parallelFor(count, task);
+  else
+    for (std::size_t i = 0; i < count; ++i)
+      task(i);
+}
+
+std::size_t NextBestViewPlanner::expand(const HypothesisSet& hypotheses, StepState& state,
+                                        const std::vector<std::size_t>& order, std::size_t next,
+                                        const std::function<bool(std::size_t)>& wanted) const {
+  // A few positions per thread at a time: more are rated than needed at the end, none twice.
+  const std::size_t batch = pool_ != nullptr ? 8 * pool_->threadCount() : 1;
+  std::size_t end = next;
+  while (end < order.size() && end - next < batch && wanted(order[end]))
+    ++end;
+  forEachPosition(end - next, [&](std::size_t i) {
+    const std::size_t p = order[next + i];
+    if (!state.expanded[p])
+      utilitiesAt(hypotheses, state.points, state.nearby[p], state.positions[p], p,
+                  state.candidates[p]);
+    state.expanded[p] = 1;
+  });
+  return end;
+}
+
+double NextBestViewPlanner::exactUtility(const HypothesisSet& hypotheses, StepState& state,
+                                         Candidate& candidate) const {
+  if (candidate.exact_total < 0.0) {
+    const std::size_t level = orientations_.levelOf(candidate.orientation);
+    candidate.exact = occludedUtility(
+        hypotheses, state.nearby[candidate.position], cameraOf(candidate, state.positions),
+        state.sight[candidate.position * orientations_.levels().size() + level]);
+    candidate.exact_total = std::accumulate(candidate.exact.begin(), candidate.exact.end(), 0.0);
+  }
+  return candidate.exact_total;
+}
+
+double NextBestViewPlanner::ratingBound(const TypeChoice& choice, const Eigen::Vector2d& camera,
+                                        const StepState& state) const {
   // The base must carry the camera at least this far: the rating's base term is bounded.
-  const Eigen::Vector2d base(current.x, current.y);
+  const Eigen::Vector2d base(state.current.x, state.current.y);
   const double sigma = parameters_.base_distance_sigma;
-  auto boundOf = [&](const TypeChoice& choice, const Eigen::Vector2d& camera) {
-    InverseCosts best_motion;
-    const double drive = std::max(0.0, (camera - base).norm() - camera_reach_);
-    best_motion.base = std::exp(-drive * drive / (2.0 * sigma * sigma));
-    best_motion.recognition = 1.0 - static_cast<double>(choice.types.size()) / type_count;
-    return rating(choice.utility, utility_max, best_motion, weights);
-  };
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    if (worth_moving && candidates[c].total <= parameters_.min_utility_for_moving)
+  InverseCosts best_motion;
+  const double drive = std::max(0.0, (camera - base).norm() - camera_reach_);
+  best_motion.base = std::exp(-drive * drive / (2.0 * sigma * sigma));
+  best_motion.recognition =
+      1.0 - static_cast<double>(choice.types.size()) / static_cast<double>(state.type_count);
+  return rating(choice.utility, state.utility_max, best_motion, parameters_.weights);
+}
+
+void NextBestViewPlanner::boundCandidates(const HypothesisSet& hypotheses, StepState& state,
+                                          std::size_t position) const {
+  std::vector<double> dense(hypotheses.types().size());
+  for (Candidate& candidate : state.candidates[position]) {
+    if (candidate.bound >= 0.0 ||
+        (state.worth_moving && candidate.total <= parameters_.min_utility_for_moving))
       continue;
     std::fill(dense.begin(), dense.end(), 0.0);
-    for (const auto& [type, u] : candidates[c].per_type)
+    for (const auto& [type, u] : candidate.per_type)
       dense[type] = u;
-    bounds[c] = boundOf(bestTypeSubset(dense, utility_max, type_count, weights),
-                        positions[candidates[c].position]);
+    candidate.bound =
+        ratingBound(bestTypeSubset(dense, state.utility_max, state.type_count, parameters_.weights),
+                    state.positions[position], state);
   }
-  std::vector<std::size_t> order(candidates.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return bounds[a] > bounds[b]; });
+}
+
+void NextBestViewPlanner::rateCandidate(const HypothesisSet& hypotheses, StepState& state,
+                                        Candidate& candidate, bool prune, double& best_rating,
+                                        Step& step) const {
+  const double total = exactUtility(hypotheses, state, candidate);
+  if (total <= 0.0 || (state.worth_moving && total <= parameters_.min_utility_for_moving))
+    return;
+  const TypeChoice choice =
+      bestTypeSubset(candidate.exact, state.utility_max, state.type_count, parameters_.weights);
+  if (prune && ratingBound(choice, state.positions[candidate.position], state) <= best_rating)
+    return;
+  const asr_common::Pose camera = cameraOf(candidate, state.positions);
   const asr_robot_model::BaseIsFree base_is_free = [this](double x, double y, double) {
     return map_.baseIsFree(x, y);
   };
-  double best_rating = -1.0;
-  for (std::size_t c : order) {
-    if (bounds[c] < 0.0 || bounds[c] <= best_rating)
-      break;
-    const double total = exactUtility(c);
-    if (total <= 0.0 || (worth_moving && total <= parameters_.min_utility_for_moving))
-      continue;
-    const TypeChoice choice = bestTypeSubset(exact[c], utility_max, type_count, weights);
-    if (boundOf(choice, positions[candidates[c].position]) <= best_rating)
-      continue;
-    const asr_common::Pose camera = cameraOf(candidates[c], positions);
-    const asr_robot_model::IkResult ik =
-        kinematics_.solve(camera.position, camera.orientation, current, base_is_free);
-    if (!ik.reachable)
-      continue;
-    const asr_robot_model::Motion motion =
-        asr_robot_model::motionBetween(current, ik.state, kinematics_.speeds());
-    const InverseCosts costs = inverseCosts(motion, current, ik.state, robot_, choice.types.size(),
-                                            type_count, parameters_);
-    const double value = rating(choice.utility, utility_max, costs, weights);
-    step.view.rated.push_back({ik.camera, value});
-    if (value > best_rating) {
-      best_rating = value;
-      PlannedView& view = step.view;
-      view.found = step.found = true;
-      view.camera = ik.camera;
-      view.state = ik.state;
-      view.types.clear();
-      for (int type : choice.types)
-        view.types.push_back(hypotheses.types()[type]);
-      view.utility = choice.utility;
-      view.utility_max = utility_max;
-      view.rating = value;
-      view.costs = costs;
-      view.motion_seconds = motion.seconds;
-    }
-  }
-  return step;
+  const asr_robot_model::IkResult ik =
+      kinematics_.solve(camera.position, camera.orientation, state.current, base_is_free);
+  if (!ik.reachable)
+    return;
+  const asr_robot_model::Motion motion =
+      asr_robot_model::motionBetween(state.current, ik.state, kinematics_.speeds());
+  const InverseCosts costs = inverseCosts(motion, state.current, ik.state, robot_,
+                                          choice.types.size(), state.type_count, parameters_);
+  const double value = rating(choice.utility, state.utility_max, costs, parameters_.weights);
+  step.view.rated.push_back({ik.camera, value});
+  if (value <= best_rating)
+    return;
+  best_rating = value;
+  PlannedView& view = step.view;
+  view.found = step.found = true;
+  view.camera = ik.camera;
+  view.state = ik.state;
+  view.types.clear();
+  for (int type : choice.types)
+    view.types.push_back(hypotheses.types()[type]);
+  view.utility = choice.utility;
+  view.utility_max = state.utility_max;
+  view.rating = value;
+  view.costs = costs;
+  view.motion_seconds = motion.seconds;
 }
 
 bool NextBestViewPlanner::reachable(const Eigen::Vector2d& camera) const {

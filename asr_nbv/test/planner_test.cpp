@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 #include "asr_common/input_error.hpp"
 #include "asr_nbv/next_best_view_planner.hpp"
@@ -136,6 +137,62 @@ TEST(Planner, SameAnswerForAnyThreadCount) {
     EXPECT_EQ(view.rating, views[0].rating);
     EXPECT_EQ(view.candidates_rated, views[0].candidates_rated);
   }
+}
+
+// The branch and bound over positions and candidates chooses exactly the view that rating every
+// position and orientation in full chooses, step by step: over random scenes (types, clouds,
+// some normals already seen, the robot anywhere free), to the last digit.
+TEST(Planner, BranchAndBoundChoosesTheExhaustiveSearchsView) {
+  NbvParameters p;
+  p.max_steps = 4;
+  const Scene scene(testing::furnishedRoom());
+  std::mt19937 random(2024);
+  asr_ism::ThreadPool pool(2);
+  int found = 0;
+  for (unsigned trial = 0; trial < 30; ++trial) {
+    // Coarser orientations on most trials: the exhaustive search rates every candidate.
+    p.orientation_step = (trial % 4 == 0 ? 8.0 : 15.0) * M_PI / 180.0;
+    const std::size_t types = 2 + random() % 6, poses = 2 + random() % 14;
+    HypothesisSet set(testing::cloudsOnFurniture(scene.world, types, poses, trial),
+                      testing::twoSidedCatalogue(types));
+    std::uniform_real_distribution<double> x(0.5, 5.5), y(0.5, 4.5), angle(-M_PI, M_PI);
+    RobotState current{x(random), y(random), angle(random), 0.0, 0.0};
+    while (!scene.map.baseIsFree(current.x, current.y)) {
+      current.x = x(random);
+      current.y = y(random);
+    }
+    if (trial % 3 == 1)  // some sides already seen, from where the robot stands
+      updateAfterView(set, asr_robot_model::cameraPose(robot(), current), set.types(), p,
+                      &scene.map);
+    const unsigned seed = trial;
+    const PlannedView exhaustive = NextBestViewPlanner(robot(), scene.world, scene.map, p, nullptr,
+                                                       seed, CandidateSearch::exhaustive)
+                                       .plan(set, current);
+    for (asr_ism::ThreadPool* threads : {static_cast<asr_ism::ThreadPool*>(nullptr), &pool}) {
+      const PlannedView bounded =
+          NextBestViewPlanner(robot(), scene.world, scene.map, p, threads, seed).plan(set, current);
+      ASSERT_EQ(bounded.found, exhaustive.found) << "trial " << trial;
+      EXPECT_EQ(bounded.steps, exhaustive.steps) << "trial " << trial;
+      EXPECT_EQ(bounded.candidates_rated, exhaustive.candidates_rated);
+      if (!exhaustive.found)
+        continue;
+      EXPECT_EQ(bounded.camera.position, exhaustive.camera.position) << "trial " << trial;
+      EXPECT_EQ(bounded.camera.orientation.coeffs(), exhaustive.camera.orientation.coeffs());
+      const RobotState& a = bounded.state;
+      const RobotState& b = exhaustive.state;
+      EXPECT_EQ(std::vector<double>({a.x, a.y, a.yaw, a.pan, a.tilt}),
+                std::vector<double>({b.x, b.y, b.yaw, b.pan, b.tilt}))
+          << "trial " << trial;
+      EXPECT_EQ(bounded.types, exhaustive.types) << "trial " << trial;
+      EXPECT_EQ(bounded.utility, exhaustive.utility) << "trial " << trial;
+      EXPECT_EQ(bounded.utility_max, exhaustive.utility_max) << "trial " << trial;
+      EXPECT_EQ(bounded.rating, exhaustive.rating) << "trial " << trial;
+      // The bounded search rates in full only a part of what the exhaustive one does.
+      EXPECT_LE(bounded.rated.size(), exhaustive.rated.size());
+    }
+    found += exhaustive.found;
+  }
+  EXPECT_GE(found, 20);
 }
 
 TEST(Planner, UpdatingAfterTheChosenViewsEventuallyLeavesNothing) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
@@ -102,6 +103,67 @@ TEST(TagsTool, APrintedSheetIsReadBackByTheDetector) {
   EXPECT_EQ(ids, (std::vector<int>{0, 1, 2, 3, 9})) << detect.out;
 }
 
+// Printed at 100 %, every tag's black square measures its tag map edge length (or --edge-mm for
+// tags the map lacks): rasterised at 150 dpi (ghostscript) and read by a pinhole camera of focal
+// length f pixels, each tag then lies at the same depth f * 25.4 mm / 150, whatever its size.
+TEST(TagsTool, APrintedPdfHoldsEachTagAtItsTrueSize) {
+  TempDir dir("tags_tool");
+  const auto print =
+      runTool(TAGS_TOOL, dir,
+              {"print", "--ids", "0-4,9,100", "--edge-mm", "30", "--out", dir.file("tags.pdf")});
+  asr_common::testing::expectSuccess(print);
+  const std::string pdf = asr_common::testing::fileBytes(dir.file("tags.pdf"));
+  EXPECT_EQ(pdf.rfind("%PDF-1.4\n", 0), 0u);
+  EXPECT_NE(pdf.find("tag36h11 id 4, edge 120.0 mm"), std::string::npos);
+  EXPECT_NE(pdf.find("tag36h11 id 100, edge 30.0 mm"), std::string::npos);
+  // The cross-reference table points at each object.
+  const std::size_t xref = std::stoul(pdf.substr(pdf.rfind("startxref") + 10));
+  ASSERT_EQ(pdf.compare(xref, 5, "xref\n"), 0);
+  std::istringstream table(pdf.substr(xref + 5));
+  int first = 0, count = 0;
+  table >> first >> count;
+  for (int object = 0; object < count; ++object) {
+    std::string offset, generation, use;
+    table >> offset >> generation >> use;
+    const std::string header = std::to_string(object) + " 0 obj";
+    if (object > 0)
+      EXPECT_EQ(pdf.substr(std::stoul(offset), header.size()), header);
+  }
+
+  const auto raster = asr_common::testing::runTool(
+      "/usr/bin/gs", dir,
+      {"-q", "-dNOPAUSE", "-dBATCH", "-dSAFER", "-sDEVICE=pnggray", "-r150",
+       "-sOutputFile=" + dir.file("page%d.png"), dir.file("tags.pdf")});
+  asr_common::testing::expectSuccess(raster);
+  // Tags 0-3 (62.5 mm with their margins) two a row, the plate's tag 4 (150 mm) on page 2.
+  std::vector<int> ids, unknown;
+  for (const char* page_file : {"page1.png", "page2.png"}) {
+    const cv::Mat page = cv::imread(dir.file(page_file), cv::IMREAD_GRAYSCALE);
+    ASSERT_FALSE(page.empty()) << page_file;
+    EXPECT_NEAR(page.cols, 210.0 / 25.4 * 150, 1.0);  // A4
+    const auto camera =
+        asr_robot_model::CameraIntrinsics::fromHorizontalFov(page.cols, page.rows, 1.0);
+    asr_robot_model::saveCameraInfo(dir.file("camera.yaml"), camera);
+    const auto detect = runTool(TAGS_TOOL, dir,
+                                {"detect", "--image", dir.file(page_file), "--camera-info",
+                                 dir.file("camera.yaml"), "--decimate", "1", "--json"});
+    asr_common::testing::expectSuccess(detect);
+    const json result = json::parse(detect.out);
+    for (const json& tag : result["tags"]) {
+      ids.push_back(tag["id"]);
+      // Within 1 %: a pixel of the 150 dpi raster is 0.3 % of a 50 mm edge.
+      const double depth = poseOf(tag["pose"]).position.z();
+      EXPECT_NEAR(depth, camera.fx * 0.0254 / 150, 0.01 * depth) << tag["id"];
+    }
+    for (const json& id : result["unknown_ids"])
+      unknown.push_back(id);
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("page3.png")));
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(ids, (std::vector<int>{0, 1, 2, 3, 4, 9}));
+  EXPECT_EQ(unknown, std::vector<int>{100}) << "tag 100 is printed, not in the map";
+}
+
 TEST(TagsTool, BadInputIsNamed) {
   TempDir dir("tags_tool");
   // Exit code 1 and the last line of stderr naming `what`.
@@ -118,6 +180,7 @@ TEST(TagsTool, BadInputIsNamed) {
   expectNamed({"detect", "--image", dir.file("grey.png"), "--camera-info", dir.file("camera.yaml")},
               "camera_matrix");
   expectNamed({"print", "--ids", "586-588", "--out", dir.file("x.png")}, "tag 587");
+  expectNamed({"print", "--ids", "100", "--edge-mm", "400", "--out", dir.file("x.pdf")}, "tag 100");
   const auto bad_ids = runTool(TAGS_TOOL, dir, {"print", "--ids", "5-2", "--out", "x.png"});
   EXPECT_EQ(bad_ids.exit_code, 2);
 }

@@ -11,6 +11,7 @@
 #include "asr_robot_model/tag_detector.hpp"
 #include "asr_robot_model/tag_family.hpp"
 #include "robot_json.hpp"
+#include "tag_sheet_pdf.hpp"
 
 namespace asr_robot_model::tools {
 
@@ -157,14 +158,15 @@ int runTagsRender(const std::vector<std::string>& arguments) {
   return 0;
 }
 
-int runTagsPrint(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments, {"ids", "out", "family", "tag-map", "cell-px"}, {});
-  const std::vector<int> ids = idList(options.required("ids"));
-  const std::string out = options.required("out");
-  const std::string family_name =
-      options.has("family") ? options.required("family") : tagMapOf(options).family;
-  const TagFamily family(family_name);
-  const int cell = static_cast<int>(options.integer("cell-px", 24, 2, 200));
+namespace {
+
+bool endsWith(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+/// A PNG sheet, `cell` pixels per cell of the family's bitmap, four tags a row.
+void printPng(const std::string& out, const TagFamily& family, const std::vector<int>& ids,
+              int cell) {
   const int side = family.totalWidth() * cell, label = 3 * cell, gap = cell;
   const int columns = std::min<int>(4, static_cast<int>(ids.size()));
   const int rows = (static_cast<int>(ids.size()) + columns - 1) / columns;
@@ -176,11 +178,36 @@ int runTagsPrint(const std::vector<std::string>& arguments) {
     for (int y = 0; y < side; ++y)
       for (int x = 0; x < side; ++x)
         sheet.at<std::uint8_t>(top + y, left + x) = bitmap.at(x / cell, y / cell);
-    cv::putText(sheet, family_name + " id " + std::to_string(ids[i]),
+    cv::putText(sheet, family.name() + " id " + std::to_string(ids[i]),
                 {left + cell, top + side + label / 2}, cv::FONT_HERSHEY_SIMPLEX, cell / 24.0,
                 cv::Scalar(0), std::max(1, cell / 12));
   }
   writePng(out, sheet);
+}
+
+}  // namespace
+
+int runTagsPrint(const std::vector<std::string>& arguments) {
+  const CommandLine options(arguments, {"ids", "out", "family", "tag-map", "cell-px", "edge-mm"},
+                            {});
+  const std::vector<int> ids = idList(options.required("ids"));
+  const std::string out = options.required("out");
+  const TagMap map = tagMapOf(options);
+  const TagFamily family(options.has("family") ? options.required("family") : map.family);
+  if (!endsWith(out, ".pdf")) {
+    printPng(out, family, ids, static_cast<int>(options.integer("cell-px", 24, 2, 200)));
+    return 0;
+  }
+  // True size: the tag map's edge length for the tags it places (in its family), else --edge-mm.
+  const double edge_mm = options.number("edge-mm", 50.0);
+  if (!(edge_mm >= 5.0 && edge_mm <= 1000.0))
+    throw UsageError{"--edge-mm must be 5 to 1000 (millimetres)"};
+  std::vector<PrintedTag> tags;
+  for (const int id : ids) {
+    const TagPlacement* placement = family.name() == map.family ? map.find(id) : nullptr;
+    tags.push_back({id, placement ? 1000.0 * placement->edge_length : edge_mm});
+  }
+  writeTagSheetPdf(out, family, tags);
   return 0;
 }
 

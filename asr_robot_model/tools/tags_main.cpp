@@ -15,8 +15,11 @@ const char* const kUsage =
     "         [--blur B] [--no-occlusion]\n"
     "      the simulated camera's image from camera_optical_frame at the pose (in map);\n"
     "      default camera 640 x 480, 60 deg horizontal field of view\n"
-    "  print --ids 0-11 --out tags.png [--family F] [--tag-map M] [--cell-px P]\n"
-    "      a sheet of tags to print (PNG; each cell P pixels, default 24; ids as 0-11 or 0,3,5-7)\n"
+    "  print --ids 0-11 --out tags.pdf|tags.png [--family F] [--tag-map M] [--edge-mm E]\n"
+    "        [--cell-px P]\n"
+    "      tags to print (ids as 0-11 or 0,3,5-7). PDF: A4 pages, each tag at its true size, the\n"
+    "      tag map's edge_length for the ids it has, else E mm (default 50); print at 100 %.\n"
+    "      PNG: one sheet, each cell P pixels (default 24)\n"
     "  --tag-map defaults to the shipped config/tag_map.yaml (its family for print);\n"
     "  --json prints one line, else the same JSON indented.\n";
 

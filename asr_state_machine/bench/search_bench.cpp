@@ -15,6 +15,8 @@
 #include "asr_common/cli/timing.hpp"
 #include "asr_state_machine/in_process_search.hpp"
 #include "asr_state_machine/kitchen.hpp"
+#include "asr_state_machine/search_picture.hpp"
+#include "comparison_plot.hpp"
 
 namespace {
 
@@ -27,13 +29,15 @@ constexpr std::size_t kPlacements = 5;
 
 const char* const kUsage =
     "usage: asr bench search [--seeds N] [--world W] [--models M] [--recordings DIR] [--json]\n"
+    "                        [--plot FILE.png]\n"
     "  Direct search only, bounding-box search and Active Scene Recognition on the kitchen\n"
     "  over N seeds (default 10): each seed changes the detection noise, the robot's start (up\n"
     "  to 0.3 m, 0.9 rad) and which of the last 5 complete recorded sets places each scene\n"
     "  (the models are learned without it); --world and --models fix world and models\n"
     "  (--world defaults to asr_state_machine/config/worlds/kitchen.yaml). A table of simulated "
     "minutes,\n"
-    "  views and objects found beside the paper's figures, and the targets.\n";
+    "  views and objects found beside the paper's figures, and the targets. --plot draws\n"
+    "  median and range of the simulated minutes per mode beside the paper's (gnuplot).\n";
 
 struct ModeRuns {
   SearchMode mode;
@@ -50,9 +54,25 @@ std::string range(const std::vector<double>& values, int digits) {
   return text.str();
 }
 
+// The modes as the paper names them.
+std::string modeLabel(SearchMode mode) {
+  switch (mode) {
+    case SearchMode::kDirect:
+      return "direct search only";
+    case SearchMode::kBoundingBox:
+      return "bounding-box NBV search";
+    case SearchMode::kAsr:
+      return "Active Scene Recognition";
+  }
+  return modeName(mode);
+}
+
 int run(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments, {"seeds", "world", "models", "recordings"}, {"json"});
+  const CommandLine options(arguments, {"seeds", "world", "models", "recordings", "plot"},
+                            {"json"});
   const int seeds = static_cast<int>(options.integer("seeds", 10, 1, 1000));
+  if (options.has("plot"))
+    checkPictureFile(options.required("plot"));  // before the searches, not after
   const std::string folder =
       (std::filesystem::temp_directory_path() / ("asr_bench_search_" + std::to_string(getpid())))
           .string();
@@ -110,6 +130,14 @@ int run(const std::vector<std::string>& arguments) {
     }
   }
   std::filesystem::remove_all(folder);
+
+  if (options.has("plot")) {
+    std::vector<asr_state_machine::bench::ModeMinutes> plotted;
+    for (const ModeRuns& mode : runs)
+      plotted.push_back({modeLabel(mode.mode), mode.minutes, mode.paper_minutes});
+    asr_state_machine::bench::plotComparison(plotted, seeds, options.required("plot"));
+    std::cerr << "plot written to " << options.required("plot") << "\n";
+  }
 
   const ModeRuns& direct = runs[0];
   const ModeRuns& bbox = runs[1];

@@ -17,17 +17,24 @@ using asr_robot_model::WorldMap;
 constexpr int kHeadings = 24;
 constexpr int kTilts = 16;
 constexpr double kPreferredDepthShare = 0.7;
-// The sweep covers a point when a view would detect an object this large standing there.
-const Eigen::Vector3d kTestObject(0.1, 0.1, 0.2);
-constexpr double kHeightsAboveTop[] = {0.14};
+// The sweep covers a point when a view would detect a test object standing there: boxes and
+// bottles (a 0.1 x 0.1 x 0.2 m box 0.14 m above the top), and flat things such as tags, whose
+// centres lie a few centimetres above the top, anywhere in the point's cell of the grid (a box
+// over the whole cell, 0.08 m high), since a tag is seen from few directions and a view that
+// sees the cell's middle may still cut it off.
+struct SweepLayer {
+  double height_above_top;
+  Eigen::Vector3d test_object;  // zero x and y: the cell's
+};
+const SweepLayer kLayers[] = {{0.14, {0.1, 0.1, 0.2}}, {0.06, {0.0, 0.0, 0.08}}};
 
-// True if every corner of an upright box of `size` centred at `target` is in the frustum and the
-// line of sight to its centre is free.
-bool seesWhole(const Pose& camera, const Eigen::Vector3d& target, const Eigen::Vector3d& size,
-               const WorldMap& map, const Frustum& frustum) {
-  asr_robot_model::Box box;
-  box.pose = Pose(target, Eigen::Quaterniond::Identity());
-  box.size = size;
+struct SweepPoint {
+  asr_robot_model::Box test_object;  // centred on the point
+};
+
+// True if every corner of the box is in the frustum and the line of sight to its centre is free.
+bool seesWhole(const Pose& camera, const asr_robot_model::Box& box, const WorldMap& map,
+               const Frustum& frustum) {
   for (const Eigen::Vector3d& corner : box.corners()) {
     if (!frustum.contains(camera.orientation.conjugate() * (corner - camera.position))) {
       return false;
@@ -49,19 +56,26 @@ bool sees(const Pose& camera, const Eigen::Vector3d& target, const WorldMap& map
 
 // Points on every furniture top, `spacing` apart, at the heights of small and of tall objects
 // standing on it.
-std::vector<Eigen::Vector3d> pointsOnTops(const asr_robot_model::World& world, double spacing) {
-  std::vector<Eigen::Vector3d> points;
+std::vector<SweepPoint> pointsOnTops(const asr_robot_model::World& world, double spacing) {
+  std::vector<SweepPoint> points;
   for (const asr_robot_model::Furniture& furniture : world.furniture) {
     const asr_robot_model::Box& box = furniture.box;
     const int nx = std::max(1, static_cast<int>(std::ceil(box.size.x() / spacing)));
     const int ny = std::max(1, static_cast<int>(std::ceil(box.size.y() / spacing)));
-    for (double height : kHeightsAboveTop) {
+    const Eigen::Vector2d cell(box.size.x() / nx, box.size.y() / ny);
+    for (const SweepLayer& layer : kLayers) {
       for (int i = 0; i < nx; ++i) {
         for (int j = 0; j < ny; ++j) {
-          const Eigen::Vector3d local((i + 0.5) * box.size.x() / nx - box.size.x() / 2,
-                                      (j + 0.5) * box.size.y() / ny - box.size.y() / 2,
-                                      box.size.z() / 2 + height);
-          points.push_back(box.pose.position + box.pose.orientation * local);
+          const Eigen::Vector3d local((i + 0.5) * cell.x() - box.size.x() / 2,
+                                      (j + 0.5) * cell.y() - box.size.y() / 2,
+                                      box.size.z() / 2 + layer.height_above_top);
+          SweepPoint point;
+          point.test_object.pose =
+              Pose(box.pose.position + box.pose.orientation * local, box.pose.orientation);
+          point.test_object.size = layer.test_object;
+          if (layer.test_object.x() == 0.0)
+            point.test_object.size.head<2>() = cell;
+          points.push_back(point);
         }
       }
     }
@@ -135,7 +149,7 @@ FurnitureSweep::FurnitureSweep(const RobotDescription& robot, const asr_robot_mo
   }
   // The sweep covers (point, side) pairs greedily: a pair no earlier view covers gets its own
   // view. A view covers a pair if it sees the point from within 45 degrees of that side.
-  const std::vector<Eigen::Vector3d> points = pointsOnTops(world, spacing);
+  const std::vector<SweepPoint> points = pointsOnTops(world, spacing);
   constexpr int kSides = 4;
   const auto sideOf = [](const Eigen::Vector3d& point, const Pose& camera) {
     const Eigen::Vector3d away = camera.position - point;
@@ -148,12 +162,13 @@ FurnitureSweep::FurnitureSweep(const RobotDescription& robot, const asr_robot_mo
       if (covered[p * kSides + side])
         continue;
       const std::optional<SearchView> view =
-          viewLookingAt(points[p], side * 2.0 * M_PI / kSides, M_PI / kSides, robot, map, frustum);
+          viewLookingAt(points[p].test_object.pose.position, side * 2.0 * M_PI / kSides,
+                        M_PI / kSides, robot, map, frustum);
       if (!view)
         continue;
       for (std::size_t q = 0; q < points.size(); ++q) {
-        if (seesWhole(view->camera, points[q], kTestObject, map, frustum)) {
-          covered[q * kSides + sideOf(points[q], view->camera)] = 1;
+        if (seesWhole(view->camera, points[q].test_object, map, frustum)) {
+          covered[q * kSides + sideOf(points[q].test_object.pose.position, view->camera)] = 1;
         }
       }
       sweep_.push_back(*view);

@@ -130,6 +130,7 @@ SearchExecutive::State SearchExecutive::run(State state) {
 
 SearchExecutive::State SearchExecutive::init() {
   result_ = SearchResult();
+  result_.start = parts_.robot.state();
   result_.world.setSceneObjects(parts_.recognizer.sceneObjects());
   log("start", std::string("mode ") + modeName(config_.mode) + ", " +
                    std::to_string(result_.world.missingObjects().size()) + " objects to find");
@@ -266,7 +267,7 @@ SearchExecutive::ViewTaken SearchExecutive::takeView(const RobotState& goal,
                                                      const std::vector<std::string>& types) {
   const MoveResult moved = parts_.robot.moveTo(goal);
   result_.sim_seconds += moved.seconds;
-  const int view = result_.world.addView({moved.camera, types, result_.sim_seconds});
+  const int view = result_.world.addView({moved.camera, types, result_.sim_seconds, moved.reached});
   log("moved", "view " + std::to_string(view) + " after " + fixed(moved.seconds, 1) + " s");
   const DetectionResult detection = parts_.detector.detect(moved.camera, types);
   result_.sim_seconds += detection.seconds;
@@ -307,6 +308,8 @@ SearchExecutive::State SearchExecutive::finish(Outcome outcome, const std::strin
 void SearchExecutive::log(const std::string& event, const std::string& detail,
                           double compute_seconds) {
   result_.log.push_back({result_.sim_seconds, stateName(state_), event, detail, compute_seconds});
+  if (log_listener_)
+    log_listener_(result_.log.back(), result_.world);
 }
 
 void SearchExecutive::decided(double compute_seconds) {

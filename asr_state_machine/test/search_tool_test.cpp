@@ -36,10 +36,26 @@ TEST(SearchTool, LearnsTheKitchenAndSearchesItToTheEnd) {
   EXPECT_EQ(asr_common::testing::fileBytes(dir.file("kitchen.yaml")),
             asr_common::testing::fileBytes(kKitchen));
 
-  const auto run =
-      runTool(SEARCH_TOOL, dir,
-              {"--world", kKitchen, "--models", models, "--mode", "asr", "--seed", "3", "--json"});
+  const std::string png = dir.file("search.png");
+  const auto run = runTool(SEARCH_TOOL, dir,
+                           {"--world", kKitchen, "--models", models, "--mode", "asr", "--seed", "3",
+                            "--json", "--png", png});
   ASSERT_EQ(run.exit_code, 0) << describe(run);
+  // The picture is a PNG; a saved result gives the same JSON and picture again.
+  const std::string picture = asr_common::testing::fileBytes(png);
+  ASSERT_GT(picture.size(), 1000u);
+  EXPECT_EQ(picture.substr(1, 3), "PNG");
+  const std::string saved = dir.write("result.json", run.out);
+  const auto again =
+      runTool(SEARCH_TOOL, dir,
+              {"--world", kKitchen, "--result", saved, "--json", "--png", dir.file("again.png")});
+  ASSERT_EQ(again.exit_code, 0) << describe(again);
+  // (A saved result keeps the total compute, not the time of every decision.)
+  nlohmann::json first = nlohmann::json::parse(run.out), second = nlohmann::json::parse(again.out);
+  first.erase("decision_compute_ms_median");
+  second.erase("decision_compute_ms_median");
+  EXPECT_EQ(second, first);
+  EXPECT_EQ(asr_common::testing::fileBytes(dir.file("again.png")), picture);
   const nlohmann::json result = nlohmann::json::parse(run.out);
   EXPECT_EQ(result["outcome"], "found_all_objects");
   EXPECT_EQ(result["reason"], "");
@@ -76,6 +92,13 @@ TEST(SearchTool, BadInputEndsWithOneLineNamingIt) {
   expectRefused(runTool(SEARCH_TOOL, dir,
                         {"--world", kKitchen, "--models", models, "--mode", "random", "--json"}),
                 "random");
+  // A picture that cannot be written is refused before the search.
+  expectRefused(
+      runTool(SEARCH_TOOL, dir,
+              {"--world", kKitchen, "--models", models, "--png", dir.file("no_folder/search.png")}),
+      "no_folder/search.png");
+  expectRefused(runTool(SEARCH_TOOL, dir, {"--world", kKitchen, "--result", dir.file("none.json")}),
+                "none.json");
   // A malformed command line is a usage error (exit code 2).
   EXPECT_EQ(runTool(SEARCH_TOOL, dir,
                     {"--world", kKitchen, "--models", models, "--required", "gedeck", "--json"})

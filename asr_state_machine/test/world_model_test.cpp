@@ -74,8 +74,8 @@ TEST(WorldModel, ClutterNeverMakesAnObjectMissingOrFound) {
 
 TEST(WorldModel, VisitedViewsAndSceneConfidencesAreKept) {
   WorldModel model = breakfastModel();
-  EXPECT_EQ(model.addView({at(0, 0, 1.2), {"Cup", "Plate"}, 3.0}), 0);
-  EXPECT_EQ(model.addView({at(1, 0, 1.2), {"Knife"}, 8.0}), 1);
+  EXPECT_EQ(model.addView({at(0, 0, 1.2), {"Cup", "Plate"}, 3.0, {}}), 0);
+  EXPECT_EQ(model.addView({at(1, 0, 1.2), {"Knife"}, 8.0, {}}), 1);
   EXPECT_EQ(model.visitedViews()[1].types, std::vector<std::string>{"Knife"});
   EXPECT_EQ(model.sceneConfidence("breakfast"), 0.0);
   model.setSceneConfidence("breakfast", 0.6);

@@ -1,11 +1,14 @@
 // `asr search` (the executable search): one active search in-process on simulated time.
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "asr_common/cli/command_line.hpp"
 #include "asr_common/cli/command_main.hpp"
+#include "asr_robot_model/world.hpp"
 #include "asr_state_machine/in_process_search.hpp"
 #include "asr_state_machine/search_json.hpp"
+#include "asr_state_machine/search_picture.hpp"
 
 namespace {
 
@@ -16,13 +19,17 @@ using asr_common::cli::UsageError;
 const char* const kUsage =
     "usage: asr search --world W --models M1[,M2..] [--scenes S1,S2..] [--required S:0.85,..]\n"
     "                  [--mode asr|direct|bbox] [--seed S] [--max-sim-minutes N]\n"
-    "                  [--demonstrated F] [--catalogue K] [--json]\n"
+    "                  [--demonstrated F] [--catalogue K] [--json] [--png P]\n"
+    "       asr search --world W --result R [--catalogue K] [--json] [--png P]\n"
     "  One active search for the objects of the scene models in a simulated world, in-process\n"
     "  on simulated time (docs/search.md). --mode asr (default): direct and indirect search;\n"
     "  direct: direct search only; bbox: next-best-view over the furniture, no scene knowledge.\n"
     "  --required: end when these scenes reach these confidences; --demonstrated: an objects\n"
     "  file of where the objects were demonstrated (direct search looks there first);\n"
-    "  --max-sim-minutes defaults to 60.\n"
+    "  --max-sim-minutes defaults to 60. --png: a top-down picture of the search (room,\n"
+    "  furniture, path, numbered views, objects found and missed). --result: the summary (or\n"
+    "  JSON) and picture of a search saved with --json (or by the search_executive node)\n"
+    "  instead of searching.\n"
     "  -> {\"outcome\", \"reason\", \"sim_seconds\", \"compute_seconds\", \"views\", \"found\": "
     "[{\"type\",\n"
     "      \"id\", \"pose\", \"found_at_s\", \"view\"}], \"scenes\": [{\"scene\", "
@@ -61,28 +68,36 @@ std::map<std::string, double> requiredScenes(const std::string& text) {
   return required;
 }
 
+// Fixed decimals, for the summary's columns.
+std::string fixed(double value, int digits) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(digits) << value;
+  return text.str();
+}
+
 void printSummary(const SearchResult& result) {
   std::cout << "outcome: " << outcomeName(result.outcome)
             << (result.reason.empty() ? "" : " (" + result.reason + ")") << "\n"
-            << "simulated: " << result.sim_seconds / 60.0 << " min, "
-            << result.world.visitedViews().size() << " views; compute " << result.compute_seconds
-            << " s\n";
+            << "simulated: " << fixed(result.sim_seconds / 60.0, 2) << " min, "
+            << result.world.visitedViews().size() << " views; compute "
+            << fixed(result.compute_seconds, 3) << " s\n"
+            << "found (simulated seconds, view):\n";
   for (const FoundObject& found : result.world.foundObjects()) {
-    std::cout << "  found " << found.key.toString() << " at " << found.found_at_s << " s in view "
-              << found.view << "\n";
+    std::cout << "  " << std::left << std::setw(28) << found.key.toString() << std::right
+              << std::setw(7) << fixed(found.found_at_s, 1) << " s  view " << found.view << "\n";
   }
+  std::cout << "scenes:\n";
   for (const auto& [scene, objects] : result.world.sceneObjects()) {
-    std::cout << "  scene " << scene << ": confidence " << result.world.sceneConfidence(scene)
-              << ", missing " << result.world.missingObjects(scene).size() << " of "
-              << objects.size() << "\n";
+    std::cout << "  " << std::left << std::setw(14) << scene << std::right << " confidence "
+              << fixed(result.world.sceneConfidence(scene), 2) << ", "
+              << objects.size() - result.world.missingObjects(scene).size() << " of "
+              << objects.size() << " objects found\n";
   }
 }
 
-int run(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments,
-                            {"world", "models", "scenes", "required", "mode", "seed",
-                             "max-sim-minutes", "demonstrated", "catalogue"},
-                            {"json"});
+SearchResult searchOrRead(const CommandLine& options) {
+  if (options.has("result"))
+    return readSearchResult(options.required("result"));
   SearchRequest request;
   request.world = options.required("world");
   request.model_files = commaList(options.required("models"));
@@ -98,7 +113,25 @@ int run(const std::vector<std::string>& arguments) {
   request.config.required_scenes = requiredScenes(options.optional("required", ""));
 
   InProcessSearch search(request);
-  const SearchResult result = search.run();
+  return search.run();
+}
+
+int run(const std::vector<std::string>& arguments) {
+  const CommandLine options(arguments,
+                            {"world", "models", "scenes", "required", "mode", "seed",
+                             "max-sim-minutes", "demonstrated", "catalogue", "png", "result"},
+                            {"json"});
+  const std::string catalogue = options.optional("catalogue", "");
+  const std::string world_file = options.required("world");
+  if (options.has("png"))
+    checkPictureFile(options.required("png"));
+  const SearchResult result = searchOrRead(options);
+  if (options.has("png")) {
+    const asr_robot_model::World world = asr_robot_model::loadWorld(
+        world_file, asr_robot_model::loadObjectCatalogue(
+                        catalogue.empty() ? asr_robot_model::defaultObjectCatalogue() : catalogue));
+    writeSearchPicture(world, result, options.required("png"));
+  }
   if (options.flag("json")) {
     std::cout << searchResultJson(result).dump() << "\n";
   } else {

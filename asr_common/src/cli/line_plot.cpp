@@ -31,6 +31,13 @@ std::string plotScript(const LinePlot& plot, const std::string& output) {
          << "set xlabel " << gnuplotQuoted(plot.x_label) << "\nset ylabel "
          << gnuplotQuoted(plot.y_label) << "\n"
          << "set key top left\nset grid\nset xtics 1\nset yrange [0:*]\n";
+  if (!plot.x_tic_labels.empty()) {
+    script << "set xrange [0.5:" << plot.x_tic_labels.size() + 0.5 << "]\nset xtics (";
+    for (std::size_t i = 0; i < plot.x_tic_labels.size(); ++i)
+      script << (i ? ", " : "") << gnuplotQuoted(plot.x_tic_labels[i]) << " " << i + 1;
+    // Categories fall from left to right in the suite's plots: the key goes where they do not.
+    script << ")\nset key top right\n";
+  }
   std::string command = "plot ";
   for (std::size_t i = 0; i < plot.curves.size(); ++i) {
     const PlotCurve& curve = plot.curves[i];

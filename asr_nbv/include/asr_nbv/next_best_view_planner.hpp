@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,11 @@ struct RatedViews {
   double utility_max = 0.0;  // the largest utility (all types) among the views
 };
 
+/// How a step's candidates are rated. `bounded`: branch and bound over lattice positions (the
+/// default); `exhaustive`: every position and orientation rated in full, the reference the
+/// bounded search must equal (tests; far slower).
+enum class CandidateSearch { bounded, exhaustive };
+
 /// Next-best-view search: candidate camera positions on a hexagonal lattice over the room,
 /// refined around the best view step by step; at each, the orientations of
 /// CandidateOrientations; utility per type from the hypotheses (occluded ones excluded); the
@@ -69,7 +75,8 @@ class NextBestViewPlanner {
   /// planner, as must `pool`; a null pool rates on the calling thread).
   NextBestViewPlanner(const asr_robot_model::RobotDescription& robot,
                       const asr_robot_model::World& world, const asr_robot_model::WorldMap& map,
-                      NbvParameters parameters, asr_ism::ThreadPool* pool, unsigned seed = 0);
+                      NbvParameters parameters, asr_ism::ThreadPool* pool, unsigned seed = 0,
+                      CandidateSearch search = CandidateSearch::bounded);
 
   /// The best view from `current` (checked finite: asr_common::InputError otherwise).
   PlannedView plan(const HypothesisSet& hypotheses,
@@ -87,8 +94,43 @@ class NextBestViewPlanner {
  private:
   struct Candidate;
   struct Step;
+  struct StepState;
   Step rateStep(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
                 const asr_robot_model::RobotState& current) const;
+  Step rateStepExhaustively(const HypothesisSet& hypotheses,
+                            const std::vector<Eigen::Vector2d>& positions,
+                            const asr_robot_model::RobotState& current) const;
+  /// Per type, >= the first pass's utility of every orientation at `position` (so >= the exact
+  /// utility of every view from there): each nearby hypothesis counted once, with the best
+  /// orientation and proximity terms any tilt level can give it.
+  void positionBound(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
+                     std::vector<double>& per_type) const;
+  StepState startStep(const HypothesisSet& hypotheses,
+                      const std::vector<Eigen::Vector2d>& positions,
+                      const asr_robot_model::RobotState& current) const;
+  /// task(0 .. count - 1), on the pool if there is one.
+  void forEachPosition(std::size_t count, const std::function<void(std::size_t)>& task) const;
+  /// The first pass (utilitiesAt) at order[next], order[next + 1], ... while `wanted` holds of
+  /// the position, a batch at a time in parallel; the index after the last one expanded.
+  std::size_t expand(const HypothesisSet& hypotheses, StepState& state,
+                     const std::vector<std::size_t>& order, std::size_t next,
+                     const std::function<bool(std::size_t)>& wanted) const;
+  /// The candidate's utility per type with occlusion (computed once).
+  double exactUtility(const HypothesisSet& hypotheses, StepState& state,
+                      Candidate& candidate) const;
+  /// >= the rating of any view from a camera at `camera` (floor) searching `choice`: motion
+  /// free but for the base's least drive, utility as given.
+  double ratingBound(const TypeChoice& choice, const Eigen::Vector2d& camera,
+                     const StepState& state) const;
+  /// Each candidate's rating bound at `position` (-1: it cannot be chosen).
+  void boundCandidates(const HypothesisSet& hypotheses, StepState& state,
+                       std::size_t position) const;
+  /// The rating of a candidate (exact utility, inverse kinematics, costs) into `step` if it beats
+  /// `best_rating`, which it then raises; `prune`: skipped without inverse kinematics if its
+  /// bound with the exact utility cannot beat it.
+  void rateCandidate(const HypothesisSet& hypotheses, StepState& state, Candidate& candidate,
+                     bool prune, double& best_rating, Step& step) const;
   /// `points`: the hypotheses' positions, as hypotheses.hypotheses() holds them.
   void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector3d>& points,
                    const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
@@ -124,6 +166,7 @@ class NextBestViewPlanner {
   // The first pass's bounds of the orientation, side and proximity terms.
   RaisedCosineBound orientation_bound_, side_bound_, proximity_bound_;
   double camera_reach_ = 0.0;  // metres from the base's centre to the camera, on the floor
+  CandidateSearch search_;
 };
 
 }  // namespace asr_nbv

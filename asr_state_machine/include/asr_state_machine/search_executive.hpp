@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -54,6 +55,7 @@ struct SearchResult {
   std::vector<double> decision_compute_seconds;
   WorldModel world;
   std::vector<LogEntry> log;
+  RobotState start;  // where the robot began (the path goes on through the visited views)
 };
 
 struct SearchParts {
@@ -86,6 +88,11 @@ class SearchExecutive {
   SearchExecutive(SearchParts parts, SearchConfig config);
 
   SearchResult run();
+
+  /// Called with every log entry as it is made and the world model as it is then (a node
+  /// publishes the search as it goes).
+  using LogListener = std::function<void(const LogEntry&, const WorldModel&)>;
+  void onLog(LogListener listener) { log_listener_ = std::move(listener); }
 
  private:
   enum class State {
@@ -121,6 +128,7 @@ class SearchExecutive {
 
   SearchParts parts_;
   SearchConfig config_;
+  LogListener log_listener_;
   SearchResult result_;
   State state_ = State::kInit;
   std::vector<SceneInstance> instances_;

@@ -7,6 +7,7 @@
 
 #include "asr_common/object.hpp"
 #include "asr_common/pose.hpp"
+#include "asr_robot_model/robot_state.hpp"
 
 namespace asr_state_machine {
 
@@ -28,6 +29,7 @@ struct VisitedView {
   Pose camera;  // camera_optical_frame in map
   std::vector<std::string> types;
   double at_s = 0.0;
+  asr_robot_model::RobotState base;  // where the robot stood (the path of the search)
 };
 
 /// When two estimates are one object.

@@ -20,6 +20,8 @@ struct LinePlot {
   std::string x_label;
   std::string y_label;
   std::vector<PlotCurve> curves;
+  /// Names of the x values 1, 2, ... (categories, e.g. search modes); empty: plain numbers.
+  std::vector<std::string> x_tic_labels;
 };
 
 /// Draws the plot as a PNG at `path` with gnuplot (pngcairo). gnuplot draws into a temporary file
