@@ -23,6 +23,7 @@ step "1. The kitchen's scene models (gedeck, Brot_Regal, Muesli_Regal), learned 
 if [ -s "$MODELS" ]; then
   echo "reusing $MODELS (delete it to learn again)"
 else
+  mkdir -p "$(dirname "$MODELS")"
   "$DEVEL/lib/asr_state_machine/learn_kitchen_models" --model "$MODELS"
 fi
 
@@ -79,5 +80,5 @@ for file in result.json search_log.jsonl search.bag search.png; do
   if [ -f "$OUT/$file" ]; then echo "  $file"; fi
 done
 if [ -f "$OUT/search.bag" ]; then
-  echo "Replay (the bag holds the search's /clock): rosparam set use_sim_time true; rosbag play $OUT/search.bag; rviz -d asr_state_machine/launch/search.rviz"
+  echo "Replay (the bag holds the search's /clock): rosparam set use_sim_time true; rosbag play -r 0.1 $OUT/search.bag; rviz -d asr_state_machine/launch/search.rviz"
 fi

@@ -12,22 +12,10 @@ RESULT="${1:-$ROOT/build/test_results/readme/walkthrough.xml}"
 TIMEOUT_S="${ASR_WALKTHROUGH_TIMEOUT_S:-600}"
 mkdir -p "$(dirname "$RESULT")"
 
+# shellcheck source=junit_result.sh
+source "$ROOT/scripts/junit_result.sh"
 # Writes the JUnit result: $1 = passed | failed | skipped, $2 = message.
-write_result() {
-  local failures=0 skipped=0 body=""
-  local message
-  message="$(sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g' -e 's/"/\&quot;/g' <<<"$2")"
-  case "$1" in
-    failed) failures=1; body="<failure message=\"$message\"/>" ;;
-    skipped) skipped=1; body="<skipped message=\"$message\"/>" ;;
-  esac
-  cat >"$RESULT" <<XML
-<?xml version="1.0" encoding="UTF-8"?>
-<testsuite name="readme" tests="1" failures="$failures" errors="0" skipped="$skipped">
-  <testcase classname="readme" name="RosWalkthroughRunsAsWritten">$body</testcase>
-</testsuite>
-XML
-}
+write_result() { junit_result "$RESULT" readme RosWalkthroughRunsAsWritten "$1" "$2"; }
 
 recordings="${ASR_RECORDINGS_DIR:-$ROOT/../shared/data/asr_recordings}"
 if [ ! -f "$recordings/story_1.sqlite" ]; then
