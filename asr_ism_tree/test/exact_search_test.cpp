@@ -12,6 +12,7 @@
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "instance_lookup.hpp"
+#include "random_perturbation.hpp"
 #include "synthetic_scene.hpp"
 
 namespace asr_ism_tree {
@@ -20,25 +21,12 @@ namespace {
 using asr_common::Configuration;
 using asr_common::Pose;
 
-constexpr double kDegree = M_PI / 180.0;
-
-// A random turn (up to 60 deg about a random axis) or shift (up to 0.2 m) of one pose.
+// A random turn or shift of one pose at a random scale in [0.02, 1], drawn before the turn or
+// shift, so every seeded case draws the same numbers as before.
 Pose perturbed(const Pose& pose, std::mt19937& random) {
-  std::normal_distribution<double> normal(0.0, 1.0);
   const double scale = std::uniform_real_distribution<double>(0.02, 1.0)(random);
-  const Eigen::Vector3d direction =
-      Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
-  Pose result = pose;
-  if (std::uniform_int_distribution<int>(0, 1)(random) == 0) {
-    result.orientation = (pose.orientation *
-                          Eigen::Quaterniond(Eigen::AngleAxisd(scale * 60.0 * kDegree, direction)))
-                             .normalized();
-  } else {
-    result.position += scale * 0.2 * direction;
-  }
-  return result;
+  return test_support::perturbed(pose, random, scale);
 }
-
 // A chain: every object related to the next one only, the deepest tree of the scene.
 RelationTopology chain(const std::vector<asr_common::ObjectKey>& objects) {
   RelationTopology topology(objects);

@@ -20,6 +20,7 @@
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "instance_lookup.hpp"
+#include "random_perturbation.hpp"
 
 namespace asr_ism_tree {
 namespace {
@@ -97,21 +98,7 @@ class RecordedScene : public ::testing::TestWithParam<SceneFile> {
   void SetUp() override { REQUIRE_RECORDINGS(); }
 };
 
-// A random turn (about a random axis, up to 60 deg) or shift (up to 0.2 m) of one pose.
-Pose perturbed(const Pose& pose, std::mt19937& random, double scale) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  const Eigen::Vector3d direction =
-      Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
-  Pose result = pose;
-  if (std::uniform_int_distribution<int>(0, 1)(random) == 0) {
-    result.orientation = (pose.orientation *
-                          Eigen::Quaterniond(Eigen::AngleAxisd(scale * 60.0 * kDegree, direction)))
-                             .normalized();
-  } else {
-    result.position += scale * 0.2 * direction;
-  }
-  return result;
-}
+using test_support::perturbed;
 
 // Seeing an object badly never scores lower than not seeing it: the instance without the object
 // is still available when the object is seen, with the object adding a similarity >= 0.
