@@ -20,6 +20,10 @@ namespace {
 // exhaustive search would have kept.
 constexpr double kBoundMargin = 1e-9;
 constexpr double kNoThreshold = -std::numeric_limits<double>::infinity();
+// How far below the best similarity a member's vote may score and still be compared: with this
+// 1,000 times the bound margin, near-equal votes (within kBoundMargin, decided by key) are all
+// compared unless a thousand of them chain down (Search::bestVote).
+constexpr double kLikelyMargin = 1e-6;
 
 // Objectives are ranked at this resolution (the bound margin), not bit for bit: a rigid motion of
 // the input changes sums in their last bits, and equal hypotheses (in a two-member ISM the
@@ -69,8 +73,12 @@ struct Neighbourhood {
   std::vector<int> members;          // members with votes here, fewest votes first
   std::vector<std::uint32_t> begin;  // per entry of `members`, range in `votes`
   std::vector<std::uint32_t> end;
-  std::vector<double> max_weight;         // per entry of `members`
-  std::vector<std::uint32_t> votes;       // vote indices grouped by member
+  std::vector<double> max_weight;    // per entry of `members`
+  std::vector<std::uint32_t> votes;  // vote indices grouped by member
+  // Each member's votes split by bin: ranges in `votes` sorted by x (VotingSpace::order), those
+  // of entry i of `members` from first_run[i] to first_run[i + 1].
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
+  std::vector<std::uint32_t> first_run;
   std::vector<std::uint32_t> candidates;  // the bin's own votes, in key order
   double upper_bound = 0.0;
   std::vector<int> atoms;  // sorted estimates that inputs with votes here stand for
@@ -209,10 +217,13 @@ class Search {
         stats_(stats),
         max_comparisons_(selection.max_comparisons),
         perfect_results_matter_(selection.best_count > 0),
+        compare_every_vote_(selection.compare_every_vote),
         support_radius_squared_(parameters.supportRadius() * parameters.supportRadius()),
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         sin_half_squared_max_angle_(sinHalfSquared(cos_half_max_angle_)) {
     vote_.resize(member_count_);
+    last_best_vote_.assign(member_count_, -1);
+    best_.resize(member_count_);
     per_member_.resize(member_count_);
     slot_.resize(member_count_);
     rank_.resize(member_count_);
@@ -267,6 +278,7 @@ class Search {
         }
       }
     }
+    splitIntoRuns(space, n);
     n.atoms = unionOfAtoms(inputs_here_, atoms_of_input_);
     n.one_input_per_member = inputs_here_.size() == n.members.size();
     // Sum in member order, as evaluate() does, so a perfect hypothesis meets the bound exactly.
@@ -337,53 +349,159 @@ class Search {
   }
 
  private:
+  void splitIntoRuns(const VotingSpace& space, Neighbourhood& n) {
+    if (bin_of_vote_.empty()) {
+      bin_of_vote_.resize(votes_.px.size());
+      for (std::uint32_t b = 0; b < space.bins().size(); ++b)
+        std::fill(bin_of_vote_.begin() + space.bins()[b].begin,
+                  bin_of_vote_.begin() + space.bins()[b].end, b);
+    }
+    n.runs.clear();
+    n.first_run.clear();
+    for (std::size_t i = 0; i < n.members.size(); ++i) {
+      n.first_run.push_back(static_cast<std::uint32_t>(n.runs.size()));
+      for (std::uint32_t k = n.begin[i]; k < n.end[i]; ++k) {
+        if (k == n.begin[i] || bin_of_vote_[n.votes[k]] != bin_of_vote_[n.votes[k - 1]])
+          n.runs.emplace_back(k, k);
+        n.runs.back().second = k + 1;
+      }
+    }
+    n.first_run.push_back(static_cast<std::uint32_t>(n.runs.size()));
+  }
+
   // Scores hypothesis `c`; false once the members left cannot lift it to `threshold`.
   bool evaluate(std::uint32_t c, const Neighbourhood& n, double threshold, double& objective) {
     std::fill(vote_.begin(), vote_.end(), -1);
-    const double cx = votes_.px[c], cy = votes_.py[c], cz = votes_.pz[c];
-    const double cw = votes_.qw[c], cqx = votes_.qx[c], cqy = votes_.qy[c], cqz = votes_.qz[c];
     double achieved = 0.0;
     double still_possible = n.upper_bound;
     for (std::size_t i = 0; i < n.members.size(); ++i) {
       const int m = n.members[i];
-      double best = 0.0;
-      stats_.comparisons += n.end[i] - n.begin[i];
-      for (std::uint32_t k = n.begin[i]; k < n.end[i]; ++k) {
-        const std::uint32_t v = n.votes[k];
-        const double vote_distance_squared = squaredDistance(v, cx, cy, cz);
-        if (vote_distance_squared >= support_radius_squared_)
-          continue;
-        const double cos_half = std::abs(votes_.qw[v] * cw + votes_.qx[v] * cqx +
-                                         votes_.qy[v] * cqy + votes_.qz[v] * cqz);
-        if (cos_half <= cos_half_max_angle_)
-          continue;
-        const double object_distance_squared = objectDistanceSquared(v, c);
-        if (object_distance_squared >= support_radius_squared_)
-          continue;
-        const double position = positionCompliance(
-            std::max(vote_distance_squared, object_distance_squared), support_radius_squared_);
-        const double orientation = orientationCompliance(cos_half, sin_half_squared_max_angle_);
-        const double similarity = position * orientation * votes_.weight[v];
-        // Near-equal votes go by key, not by where the bin layout put them.
-        const bool better = vote_[m] < 0
-                                ? similarity > 0.0
-                                : similarity > best + kBoundMargin ||
-                                      (similarity >= best - kBoundMargin &&
-                                       votes_.keyLess(v, static_cast<std::size_t>(vote_[m])));
-        if (better) {
-          best = similarity;
-          vote_[m] = static_cast<int>(v);
-          position_[m] = position;
-          orientation_[m] = orientation;
-        }
-      }
-      achieved += best;
+      stats_.neighbourhood_votes += n.end[i] - n.begin[i];
+      if (compare_every_vote_ || !bestVoteAmongLikely(c, n, i))
+        bestVote(c, n, i, 0.0, std::numeric_limits<double>::infinity());
+      achieved += best_[m];
       still_possible -= n.max_weight[i];
       if (achieved + still_possible < threshold - kBoundMargin)
         return false;
     }
     objective = achieved;
     return true;
+  }
+
+  // Member i's best vote for hypothesis c, compared only with the votes that may come within
+  // kLikelyMargin of the best similarity: a vote at distance d scores at most (1 - d^2 / r^2) x
+  // the member's largest weight here, and the best similarity is at least that of the member's
+  // best vote for the previous hypothesis, usually a neighbour of this one. False where that
+  // cannot be shown to give the result of comparing every vote (see bestVote).
+  bool bestVoteAmongLikely(std::uint32_t c, const Neighbourhood& n, std::size_t i) {
+    const int m = n.members[i];
+    const int seed = last_best_vote_[m];
+    double seed_similarity = 0.0;
+    if (seed >= 0) {
+      ++stats_.comparisons;
+      seed_similarity = similarityOf(static_cast<std::uint32_t>(seed), c);
+    }
+    return bestVote(c, n, i, seed_similarity, kLikelyMargin);
+  }
+
+  // Compares hypothesis c with member i's votes in order, keeping the best (ties by key, as
+  // votes near-equal within kBoundMargin go by key, not by where the bin layout put them), but
+  // skips a vote whose bound (1 - d^2 / r^2) x largest weight falls more than `margin` below
+  // both `floor` (a similarity some vote reaches) and the best so far. Skipping never changes the
+  // answer: each vote skipped scores more than `margin` below the best M, and the votes that
+  // decide among near-equals lie within a chain of kBoundMargin steps below M; with fewer than
+  // margin / kBoundMargin votes compared at or above floor - margin, that chain cannot reach the
+  // skipped ones, so they are ignored by the scan of every vote too. False if that count is
+  // reached (the caller then compares every vote).
+  bool bestVote(std::uint32_t c, const Neighbourhood& n, std::size_t i, double floor,
+                double margin) {
+    const int m = n.members[i];
+    const double cx = votes_.px[c], cy = votes_.py[c], cz = votes_.pz[c];
+    const double max_weight = n.max_weight[i];
+    // Two margins of slack for rounding in the skip test (see above).
+    const std::size_t chain_limit = std::isfinite(margin)
+                                        ? static_cast<std::size_t>(margin / kBoundMargin) - 2
+                                        : std::numeric_limits<std::size_t>::max();
+    std::size_t near_floor = 0;
+    double best = 0.0;
+    int best_vote = -1;
+    // Beyond this squared distance a vote's bound falls below max(floor, best) - margin.
+    const auto skipBeyond = [&](double best_so_far) {
+      const double bar = std::max(floor, best_so_far) - margin;
+      return bar <= 0.0 ? support_radius_squared_
+                        : support_radius_squared_ * std::max(0.0, 1.0 - bar / max_weight);
+    };
+    double skip_beyond_squared = skipBeyond(best);
+    // A run's votes are sorted by x: only those within the skip distance in x are looked at.
+    for (std::uint32_t run = n.first_run[i]; run < n.first_run[i + 1]; ++run) {
+      const double reach = std::sqrt(skip_beyond_squared) * (1.0 + 1e-9);
+      const auto [first, last] = n.runs[run];
+      std::uint32_t k = static_cast<std::uint32_t>(
+          std::lower_bound(n.votes.begin() + first, n.votes.begin() + last, cx - reach,
+                           [&](std::uint32_t v, double x) { return votes_.px[v] < x; }) -
+          n.votes.begin());
+      for (; k < last && votes_.px[n.votes[k]] <= cx + reach; ++k) {
+        const std::uint32_t v = n.votes[k];
+        const double vote_distance_squared = squaredDistance(v, cx, cy, cz);
+        if (vote_distance_squared >= skip_beyond_squared ||
+            vote_distance_squared >= support_radius_squared_)
+          continue;
+        ++stats_.comparisons;
+        double position, orientation;
+        const double similarity = similarityOf(
+            v, c, vote_distance_squared, std::max(floor, best) - margin, position, orientation);
+        if (similarity < 0.0)
+          continue;  // fails the support test or scores too little
+        if (similarity >= floor - margin && ++near_floor >= chain_limit)
+          return false;
+        const bool better = best_vote < 0
+                                ? similarity > 0.0
+                                : similarity > best + kBoundMargin ||
+                                      (similarity >= best - kBoundMargin &&
+                                       votes_.keyLess(v, static_cast<std::size_t>(best_vote)));
+        if (better) {
+          best = similarity;
+          best_vote = static_cast<int>(v);
+          position_[m] = position;
+          orientation_[m] = orientation;
+          skip_beyond_squared = skipBeyond(best);
+        }
+      }
+    }
+    vote_[m] = best_vote;
+    best_[m] = best;
+    if (best_vote >= 0)
+      last_best_vote_[m] = best_vote;
+    return true;
+  }
+
+  // The similarity of vote v to hypothesis c (x weight), -1 if it fails the support test.
+  double similarityOf(std::uint32_t v, std::uint32_t c) {
+    double position, orientation;
+    return similarityOf(v, c, squaredDistance(v, votes_.px[c], votes_.py[c], votes_.pz[c]),
+                        kNoThreshold, position, orientation);
+  }
+
+  // Also -1 where the vote, by its distance and orientation alone, scores below `skip_below`.
+  double similarityOf(std::uint32_t v, std::uint32_t c, double vote_distance_squared,
+                      double skip_below, double& position, double& orientation) const {
+    if (vote_distance_squared >= support_radius_squared_)
+      return -1.0;
+    const double cos_half = std::abs(votes_.qw[v] * votes_.qw[c] + votes_.qx[v] * votes_.qx[c] +
+                                     votes_.qy[v] * votes_.qy[c] + votes_.qz[v] * votes_.qz[c]);
+    if (cos_half <= cos_half_max_angle_)
+      return -1.0;
+    orientation = orientationCompliance(cos_half, sin_half_squared_max_angle_);
+    if (positionCompliance(vote_distance_squared, support_radius_squared_) * orientation *
+            votes_.weight[v] <
+        skip_below)
+      return -1.0;
+    const double object_distance_squared = objectDistanceSquared(v, c);
+    if (object_distance_squared >= support_radius_squared_)
+      return -1.0;
+    position = positionCompliance(std::max(vote_distance_squared, object_distance_squared),
+                                  support_radius_squared_);
+    return position * orientation * votes_.weight[v];
   }
 
   double squaredDistance(std::uint32_t v, double x, double y, double z) const {
@@ -413,10 +531,14 @@ class Search {
   IsmRecognitionStats& stats_;
   const std::size_t max_comparisons_;
   const bool perfect_results_matter_;
+  const bool compare_every_vote_;
   const double support_radius_squared_;
   const double cos_half_max_angle_;
   const double sin_half_squared_max_angle_;
-  std::vector<int> vote_;
+  std::vector<int> vote_;  // per member, the matched vote or -1
+  std::vector<double> best_;
+  std::vector<int> last_best_vote_;  // per member, its last matched vote or -1
+  std::vector<std::uint32_t> bin_of_vote_;
   std::vector<std::uint32_t> per_member_;
   std::vector<std::uint32_t> slot_;
   std::vector<int> rank_;
@@ -776,6 +898,7 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
     stats->bins += local_stats.bins;
     stats->candidates += local_stats.candidates;
     stats->comparisons += local_stats.comparisons;
+    stats->neighbourhood_votes += local_stats.neighbourhood_votes;
   }
   return selectResults(found, votes, atoms_of_input, selection);
 }

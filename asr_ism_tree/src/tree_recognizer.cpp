@@ -258,6 +258,7 @@ void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>
   stats.bins += spent.bins;
   stats.candidates += spent.candidates;
   stats.comparisons += spent.comparisons;
+  stats.neighbourhood_votes += spent.neighbourhood_votes;
 }
 
 TreeEvaluation TreeRecognizer::evaluateIsms(
@@ -307,6 +308,7 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
       stats->isms.bins += s.bins;
       stats->isms.candidates += s.candidates;
       stats->isms.comparisons += s.comparisons;
+      stats->isms.neighbourhood_votes += s.neighbourhood_votes;
     }
     stats->root_results += evaluated[0].results.size();
   }

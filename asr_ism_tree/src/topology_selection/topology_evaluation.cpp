@@ -28,7 +28,7 @@ TopologyMeasures evaluateTopology(const asr_ism::Demonstration& demonstration,
     const auto instances = recognizer.recognize(configuration, &stats);
     total_ms +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    work += stats.isms.comparisons;
+    work += stats.isms.neighbourhood_votes;
     return !instances.empty() && instances.front().confidence >= threshold;
   };
   auto overBudget = [&] { return max_work > 0.0 && static_cast<double>(work) > max_work; };
