@@ -181,6 +181,12 @@ double arcCosineUpperBound(double q) {
   return table[std::clamp(static_cast<int>(index), 0, kEntries)];
 }
 
+// std::floor as a long without a library call (the heading windows' hot path).
+long floorToLong(double x) {
+  const long truncated = static_cast<long>(x);
+  return x < static_cast<double>(truncated) ? truncated - 1 : truncated;
+}
+
 // Headings of a level whose axis lies within an angle (its cosine `cosine`) of a direction
 // with this elevation (its sine and cosine) and azimuth: [first, first + count) modulo the
 // level's headings. From cos(angle) = sin e1 sin e2 + cos e1 cos e2 cos(azimuth difference).
@@ -198,8 +204,8 @@ std::pair<long, long> headingWindow(const TiltLevel& level, double level_sine, d
     return {0, all};
   const double spread = arcCosineUpperBound(q) / level.heading_step;
   const double centre = (azimuth - level.first_heading) / level.heading_step;
-  const long first = static_cast<long>(std::floor(centre - spread));
-  const long last = static_cast<long>(std::ceil(centre + spread));
+  const long first = floorToLong(centre - spread);
+  const long last = -floorToLong(-(centre + spread));  // the ceiling
   if (last - first + 1 >= all)
     return {0, all};
   return {first, last - first + 1};
@@ -297,7 +303,11 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
           headingWindow(level, level_sine_[l], level_cosine_[l], rise * inverse_distance,
                         horizontal * inverse_distance, azimuth, side_cosine);
       const long headings = static_cast<long>(level.headings);
-      long h = ((first % headings) + headings) % headings;
+      long h = first;  // within a few turns of the circle: no division needed
+      while (h < 0)
+        h += headings;
+      while (h >= headings)
+        h -= headings;
       double* const row = utility.data() + packed.types[index];
       for (long k = 0; k < count; ++k, h = (h + 1 == headings) ? 0 : h + 1) {
         const std::size_t o = level.first_orientation + static_cast<std::size_t>(h);
