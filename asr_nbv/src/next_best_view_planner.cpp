@@ -380,6 +380,7 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
   constexpr double kMargin = 1.0 + 1e-6;
   // Covers the rounding of the cosine of the elevation difference.
   constexpr double kCosineMargin = 1e-9;
+  constexpr double kOrientationAtMost = 1.0 + 1e-6;
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
   const double side_cosine = std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
   const double reach = frustum.far() / side_cosine;
@@ -407,9 +408,12 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
           1.0, (level_cosine_[l] * horizontal + level_sine_[l] * rise) / distance + kCosineMargin);
       const double low = side_cosine * distance, high = cosine * distance;
       const double gap = middle < low ? low - middle : std::max(0.0, middle - high);
-      best = std::max(best, orientationBound(packed, index, offset, distance) *
-                                side_bound_.ofCosine(cosine) *
-                                proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9)));
+      const double terms =
+          side_bound_.ofCosine(cosine) * proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9));
+      // The orientation bound is at most 1 plus its table's margin: skipped where it cannot
+      // raise the best.
+      if (terms * kOrientationAtMost > best)
+        best = std::max(best, orientationBound(packed, index, offset, distance) * terms);
     }
     per_type[packed.types[index]] += kMargin * best;
   }
