@@ -115,7 +115,8 @@ class NextBestViewPlanner {
                             const asr_robot_model::RobotState& current) const;
   /// Per type, >= the first pass's utility of every orientation at `position` (so >= the exact
   /// utility of every view from there): each nearby hypothesis counted once, with the best
-  /// orientation and proximity terms any tilt level can give it.
+  /// orientation, side and proximity terms any tilt level can give it (the side term from the
+  /// elevation difference to the level's axis, which no heading can undercut).
   void positionBound(const HypothesisSet& hypotheses, const PackedHypotheses& packed,
                      const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
                      std::vector<double>& per_type) const;
