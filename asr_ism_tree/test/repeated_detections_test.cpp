@@ -164,7 +164,7 @@ TEST_F(RepeatedDetectionsInATree, WithoutRepeatsTheResultsAreThoseOfTheExhaustiv
 TEST_F(RepeatedDetectionsInATree, TheMergedInstanceIsAtLeastThatOfTheRepresentativesAlone) {
   // Three repeats of every object (1 cm / 2 deg): the merged best instance is at least the one
   // recognised from the representatives alone, and that of the exhaustive search over every
-  // repeat where the search over the repeats completed.
+  // repeat (the search over the repeats completes in these cases).
   for (unsigned seed = 1; seed <= 5; ++seed) {
     const Configuration configuration = jittered(3, seed);
     for (std::size_t t = 0; t < 2; ++t) {
@@ -182,8 +182,8 @@ TEST_F(RepeatedDetectionsInATree, TheMergedInstanceIsAtLeastThatOfTheRepresentat
       ASSERT_FALSE(alone.empty());
       EXPECT_GE(merged.front().confidence, alone.front().confidence - 1e-12);
       EXPECT_LE(merged.front().confidence, all.front().confidence + 1e-9);
-      if (stats.repeat_searches_given_up == 0 && stats.exact_searches_given_up == 0)
-        EXPECT_NEAR(merged.front().confidence, all.front().confidence, 1e-9);
+      EXPECT_EQ(stats.repeat_searches_given_up + stats.exact_searches_given_up, 0u);
+      EXPECT_NEAR(merged.front().confidence, all.front().confidence, 1e-9);
       EXPECT_TRUE(merged.front().missing.empty());
     }
   }
