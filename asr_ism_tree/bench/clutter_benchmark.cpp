@@ -83,6 +83,7 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
         TreeRecognitionStats stats;
         row.milliseconds = millisecondsOf(recognizer, input, instances, &stats);
         row.merged = stats.merged_estimates;
+        row.repeat_search_given_up = stats.repeat_searches_given_up > 0;
         for (int again = 1; again < 3 && row.milliseconds < 2000.0; ++again)
           row.milliseconds =
               std::min(row.milliseconds, millisecondsOf(recognizer, input, instances));
@@ -106,7 +107,8 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
 void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
   out << "Clutter: gedeck set " << kRecordedSet
       << " repeated with 2 cm / 3 deg jitter (all estimates of the scene's types)\n";
-  out << "(repeated detections merged; exhaustive: every repeat enters the search)\n";
+  out << "(repeated detections merged; exhaustive: every repeat enters the search; *: the search\n"
+      << " over every repeat ran out of its work limits, the best over the merged ones stands)\n";
   out << "topology  estimates     kept        ms  instances  best confidence  exhaustive best\n";
   char line[160];
   for (const ClutterRow& row : rows) {
@@ -114,9 +116,9 @@ void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
       std::snprintf(line, sizeof line, "%-8s  %9zu  %7zu  %8.1f  %9zu  %15.3f",
                     row.topology.c_str(), row.estimates, row.estimates - row.merged,
                     row.milliseconds, row.instances, row.best_confidence);
-      out << line;
+      out << line << (row.repeat_search_given_up ? "*" : " ");
       if (row.exhaustive_best_confidence >= 0.0) {
-        std::snprintf(line, sizeof line, "  %15.3f", row.exhaustive_best_confidence);
+        std::snprintf(line, sizeof line, " %15.3f", row.exhaustive_best_confidence);
         out << line;
       }
       out << "\n";

@@ -18,7 +18,9 @@ struct ClutterRow {
   double best_confidence = 0.0;
   std::size_t instances = 0;
   std::size_t merged = 0;  // repeated detections merged away
-  bool run = false;        // false: skipped, a smaller size of this topology took too long
+  // The search over every repeat ran out of its work limits: the merged best stands.
+  bool repeat_search_given_up = false;
+  bool run = false;  // false: skipped, a smaller size of this topology took too long
   // The best confidence of the exhaustive search (every repeated detection enters, seconds of
   // work); measured for the smallest size only, negative where not measured.
   double exhaustive_best_confidence = -1.0;

@@ -15,11 +15,12 @@ constexpr double kNothing = std::numeric_limits<double>::infinity();
 }  // namespace
 
 ExactBestSearch::ExactBestSearch(const IsmTree& tree, std::vector<bool> object_seen,
-                                 Evaluate evaluate, BestObjective best)
+                                 Evaluate evaluate, BestObjective best, Start start)
     : tree_(tree),
       object_seen_(std::move(object_seen)),
       evaluate_(std::move(evaluate)),
       best_(std::move(best)),
+      start_(start),
       maximum_(tree.isms.size(), kNothing),
       searched_from_(tree.isms.size(), kNothing),
       stamp_(tree.isms.size(), 0) {}
@@ -81,9 +82,11 @@ bool ExactBestSearch::run(const std::vector<int>& bottom_up) {
   for (int ism : bottom_up) {
     if (ism == 0)
       continue;
-    // A sub-ISM over objects only searched all its hypotheses; one whose best reaches the bound
-    // cannot do better. Otherwise its maximum is that of its exact search.
-    if (hasSubIsm(ism) && best_(ism) < boundOf(ism) - kMargin)
+    // A sub-ISM over objects only searched all its hypotheses (unless its results are lower
+    // bounds); one whose best reaches the bound cannot do better. Otherwise its maximum is that
+    // of its exact search, which the lower bound its best is makes exact.
+    const bool searched_all = !hasSubIsm(ism) && start_ == Start::kFirstEvaluation;
+    if (!searched_all && best_(ism) < boundOf(ism) - kMargin)
       require(ism, best_(ism));
     maximum_[ism] = best_(ism);
   }

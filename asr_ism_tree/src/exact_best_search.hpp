@@ -21,6 +21,16 @@ namespace asr_ism_tree {
 /// the bound nothing is asked at all.
 class ExactBestSearch {
  public:
+  /// What the ISMs' current results are when the search starts.
+  enum class Start {
+    /// A first evaluation over the same estimates: a sub-ISM over objects only has tried every
+    /// hypothesis, so its best is its maximum.
+    kFirstEvaluation,
+    /// Results over a subset of the estimates (the representatives of repeated detections): each
+    /// ISM's best is only a lower bound of its maximum over these estimates, as the exhaustive
+    /// search's best cannot fall when estimates are added, so every ISM is evaluated anew.
+    kLowerBounds,
+  };
   /// Re-evaluates one ISM from its children's current results. `from`: a sub-ISM passes up every
   /// result reaching it besides its few best; the root returns only the results reaching it.
   using Evaluate = std::function<void(int ism, double from)>;
@@ -29,11 +39,12 @@ class ExactBestSearch {
 
   /// `object_seen`: per object of the tree, whether any estimate may stand for it.
   ExactBestSearch(const IsmTree& tree, std::vector<bool> object_seen, Evaluate evaluate,
-                  BestObjective best);
+                  BestObjective best, Start start = Start::kFirstEvaluation);
 
   /// `bottom_up`: every ISM, children before parents. True if the root was evaluated anew: its
   /// best result is then that of the exhaustive search, and every sub-ISM's results are those its
-  /// parent's links refer to. False: the first evaluation's best already was.
+  /// parent's links refer to. False: the first evaluation's best already was (with
+  /// Start::kLowerBounds: the starting results' best reaches the bound, so it is the maximum).
   bool run(const std::vector<int>& bottom_up);
 
  private:
@@ -50,6 +61,7 @@ class ExactBestSearch {
   const std::vector<bool> object_seen_;
   const Evaluate evaluate_;
   const BestObjective best_;
+  const Start start_;
   std::vector<double> maximum_;        // exact maximum objective per sub-ISM, once known
   std::vector<double> searched_from_;  // every result reaching it is passed up
   std::vector<unsigned> stamp_;        // when each ISM was last evaluated

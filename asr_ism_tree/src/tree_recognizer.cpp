@@ -34,11 +34,15 @@ struct ExactSearchBudget {
 };
 
 // The first evaluation (a few results per sub-ISM) and, where its best instance may not be the
-// exhaustive search's, the exact search's, whose root holds the results reaching the first best.
+// exhaustive search's, the exact search's, whose root holds the results reaching the first best;
+// where repeated detections were merged, the exact search over every estimate, whose root holds
+// the results reaching the best over the representatives.
 struct TreeEvaluation {
   std::vector<EvaluatedIsm> first;
   std::vector<EvaluatedIsm> exact;
   bool has_exact = false;
+  std::vector<EvaluatedIsm> over_repeats;
+  bool has_over_repeats = false;
 };
 
 namespace {
@@ -173,22 +177,27 @@ bool sameInstance(const SceneInstance& a, const SceneInstance& b) {
   return true;
 }
 
-// The root results that become instances: the first evaluation's, and the exact search's best
-// where it is better, in place of the first results it makes redundant (their estimates are all
-// among its own).
+// The root results that become instances: the first evaluation's, and the best of the exact
+// searches' where it is better, in place of the first results it makes redundant (their
+// estimates are all among its own).
 std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>> rootResultsToAssemble(
     const TreeEvaluation& evaluation) {
   std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>> chosen;
   const auto& first = evaluation.first[0].results;
-  const IsmResult* exact_best = evaluation.has_exact && !evaluation.exact[0].results.empty()
-                                    ? &evaluation.exact[0].results[0]
-                                    : nullptr;
-  if (exact_best != nullptr &&
-      (first.empty() || exact_best->objective > first.front().objective + 1e-9)) {
-    chosen.emplace_back(&evaluation.exact, 0);
-  } else {
-    exact_best = nullptr;
+  const std::vector<EvaluatedIsm>* better = nullptr;
+  double best = first.empty() ? -std::numeric_limits<double>::infinity() : first.front().objective;
+  for (const auto& [searched, ran] :
+       {std::make_pair(&evaluation.exact, evaluation.has_exact),
+        std::make_pair(&evaluation.over_repeats, evaluation.has_over_repeats)}) {
+    const auto& results = (*searched)[0].results;
+    if (ran && !results.empty() && results.front().objective > best + 1e-9) {
+      better = searched;
+      best = results.front().objective;
+    }
   }
+  const IsmResult* exact_best = better != nullptr ? &(*better)[0].results.front() : nullptr;
+  if (better != nullptr)
+    chosen.emplace_back(better, 0);
   for (std::size_t r = 0; r < first.size(); ++r) {
     const bool redundant = exact_best != nullptr &&
                            std::includes(exact_best->estimates.begin(), exact_best->estimates.end(),
@@ -261,9 +270,36 @@ void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>
   stats.neighbourhood_votes += spent.neighbourhood_votes;
 }
 
+bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool from_lower_bounds,
+                                   const std::vector<Pose>& poses,
+                                   const std::vector<std::vector<int>>& estimates_of_object,
+                                   std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
+                                   ExactSearchBudget& budget, std::size_t* given_up) const {
+  std::vector<bool> object_seen(tree_.objects().size());
+  for (std::size_t object = 0; object < object_seen.size(); ++object)
+    object_seen[object] = !estimates_of_object[object].empty();
+  const auto evaluate = [&](int ism, double from) {
+    evaluateIsm(ism, from, evaluated, poses, estimates_of_object, ism_stats[ism], &budget);
+  };
+  const auto best = [&](int ism) {
+    const auto& results = evaluated[ism].results;
+    return results.empty() ? 0.0 : results.front().objective;
+  };
+  const auto start = from_lower_bounds ? ExactBestSearch::Start::kLowerBounds
+                                       : ExactBestSearch::Start::kFirstEvaluation;
+  try {
+    return ExactBestSearch(tree_, std::move(object_seen), evaluate, best, start).run(bottom_up_);
+  } catch (const ExactSearchTooLarge&) {
+    if (given_up != nullptr)
+      ++*given_up;
+    return false;  // the best found before stands
+  }
+}
+
 TreeEvaluation TreeRecognizer::evaluateIsms(
     const std::vector<Pose>& poses, const std::vector<std::vector<int>>& estimates_of_object,
-    TreeRecognitionStats* stats, ExactSearchBudget& budget) const {
+    const std::vector<std::vector<int>>* with_repeats, TreeRecognitionStats* stats,
+    ExactSearchBudget& budget) const {
   // Bottom-up evaluation (Algo. 2), level by level; the ISMs of one level are independent.
   TreeEvaluation evaluation;
   std::vector<EvaluatedIsm>& evaluated = evaluation.first;
@@ -281,26 +317,20 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
         evaluate(ism, kOnlyTheBest);
     }
   }
-  if (parameters_.exact_best && !parameters_.pass_every_result && tree_.isms.size() > 1) {
-    std::vector<bool> object_seen(tree_.objects().size());
-    for (std::size_t object = 0; object < object_seen.size(); ++object)
-      object_seen[object] = !estimates_of_object[object].empty();
+  const bool exact = parameters_.exact_best && !parameters_.pass_every_result;
+  if (exact && tree_.isms.size() > 1) {
     evaluation.exact = evaluated;
-    const auto evaluate_exact = [&](int ism, double from) {
-      evaluateIsm(ism, from, evaluation.exact, poses, estimates_of_object, ism_stats[ism], &budget);
-    };
-    const auto best = [&](int ism) {
-      const auto& results = evaluation.exact[ism].results;
-      return results.empty() ? 0.0 : results.front().objective;
-    };
-    try {
-      evaluation.has_exact =
-          ExactBestSearch(tree_, std::move(object_seen), evaluate_exact, best).run(bottom_up_);
-    } catch (const ExactSearchTooLarge&) {
-      evaluation.has_exact = false;  // the first evaluation's best stands
-      if (stats != nullptr)
-        ++stats->exact_searches_given_up;
-    }
+    evaluation.has_exact =
+        searchExactly(evaluation.exact, false, poses, estimates_of_object, ism_stats, budget,
+                      stats != nullptr ? &stats->exact_searches_given_up : nullptr);
+  }
+  if (exact && parameters_.exact_over_repeats && with_repeats != nullptr) {
+    // Every result found over the representatives is one over every estimate too: their best
+    // is a lower bound the search over every repeat starts from (docs/recognition.md).
+    evaluation.over_repeats = evaluation.has_exact ? evaluation.exact : evaluated;
+    evaluation.has_over_repeats =
+        searchExactly(evaluation.over_repeats, true, poses, *with_repeats, ism_stats, budget,
+                      stats != nullptr ? &stats->repeat_searches_given_up : nullptr);
   }
   if (stats != nullptr) {
     for (const auto& s : ism_stats) {
@@ -370,17 +400,17 @@ SceneInstance TreeRecognizer::assembleInstance(
   return instance;
 }
 
-void TreeRecognizer::mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
-                                   const std::vector<Pose>& poses,
-                                   TreeRecognitionStats* stats) const {
+std::size_t TreeRecognizer::mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
+                                          const std::vector<Pose>& poses) const {
   const RepeatedDetectionTolerance tolerance{tree_.parameters.supportRadius(),
                                              tree_.parameters.max_angle_deviation};
+  std::size_t left_out = 0;
   for (std::vector<int>& estimates : estimates_of_object) {
     const std::size_t before = estimates.size();
     estimates = mergeRepeatedDetections(estimates, poses, tolerance);
-    if (stats != nullptr)
-      stats->merged_estimates += before - estimates.size();
+    left_out += before - estimates.size();
   }
+  return left_out;
 }
 
 std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configuration& configuration,
@@ -407,11 +437,15 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
   ExactSearchBudget budget{parameters_.exact_search_max_votes,
                            parameters_.exact_search_max_comparisons};
   for (std::size_t labelling = 0; labelling < labellings; ++labelling) {
-    auto estimates_of_object =
+    const auto every_estimate =
         matching.estimatesOfObjects(labelling, tree_.objects().size(), canonical);
-    if (parameters_.merge_repeated_detections)
-      mergeRepeated(estimates_of_object, poses, stats);
-    const TreeEvaluation evaluation = evaluateIsms(poses, estimates_of_object, stats, budget);
+    auto estimates_of_object = every_estimate;
+    const std::size_t merged =
+        parameters_.merge_repeated_detections ? mergeRepeated(estimates_of_object, poses) : 0;
+    if (stats != nullptr)
+      stats->merged_estimates += merged;
+    const TreeEvaluation evaluation = evaluateIsms(
+        poses, estimates_of_object, merged > 0 ? &every_estimate : nullptr, stats, budget);
     for (const auto& [evaluated, r] : rootResultsToAssemble(evaluation)) {
       SceneInstance instance = assembleInstance(*evaluated, r, poses, estimates_of_object);
       instance.ids_ignored = matching.ids_ignored;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#include <map>
 #include <numeric>
 #include <queue>
 #include <tuple>
@@ -32,13 +32,38 @@ struct NextBestViewPlanner::Step {
   PlannedView view;
 };
 
+// What the first pass reads of each hypothesis, in flat arrays: its position, type and active
+// normals (normals_begin[i] .. normals_begin[i + 1]; none: recognisable from every side).
+struct NextBestViewPlanner::PackedHypotheses {
+  explicit PackedHypotheses(const HypothesisSet& hypotheses) {
+    const auto& all = hypotheses.hypotheses();
+    points.reserve(all.size());
+    types.reserve(all.size());
+    normals_begin.reserve(all.size() + 1);
+    for (const Hypothesis& hypothesis : all) {
+      points.push_back(hypothesis.box.pose.position);
+      types.push_back(hypothesis.type);
+      normals_begin.push_back(static_cast<std::uint32_t>(normals.size()));
+      for (std::size_t n = 0; n < hypothesis.normals.size(); ++n)
+        if (hypothesis.active[n])
+          normals.push_back(hypothesis.normals[n]);
+    }
+    normals_begin.push_back(static_cast<std::uint32_t>(normals.size()));
+  }
+  std::vector<Eigen::Vector3d> points;
+  std::vector<int> types;
+  std::vector<std::uint32_t> normals_begin;
+  std::vector<Eigen::Vector3d> normals;
+};
+
 // What the candidates of one step share while they are rated.
 struct NextBestViewPlanner::StepState {
-  StepState(const std::vector<Eigen::Vector2d>& at, const RobotState& from)
-      : positions(at), current(from) {}
+  StepState(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& at,
+            const RobotState& from)
+      : positions(at), current(from), packed(hypotheses) {}
   const std::vector<Eigen::Vector2d>& positions;
   const RobotState& current;
-  std::vector<Eigen::Vector3d> points;  // the hypotheses' positions, packed
+  PackedHypotheses packed;
   std::vector<std::vector<std::size_t>> nearby;
   std::vector<std::vector<Candidate>> candidates;  // per position, once expanded
   std::vector<char> expanded;
@@ -55,15 +80,33 @@ namespace {
 // Camera heights differ by tilt; IK must accept the heights this planner computes itself.
 constexpr double kHeightTolerance = 1e-6;
 
-// Counting hypotheses bucketed by floor cells of the far plane's size, so the ones a position
-// can see are found in the 3 x 3 cells around it.
+// Counting hypotheses bucketed by floor cells a quarter of the far plane's reach wide, so the
+// ones a position can see are found in the cells around it; whole cells within reach are taken
+// without a distance test.
 class HypothesisGrid {
  public:
-  HypothesisGrid(const HypothesisSet& hypotheses, double cell) : cell_(cell) {
+  HypothesisGrid(const HypothesisSet& hypotheses, double reach)
+      : cell_(reach / kCellsPerReach), count_(hypotheses.hypotheses().size()) {
     const auto& all = hypotheses.hypotheses();
+    Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
+    Eigen::Vector2d high = -low;
+    for (const Hypothesis& hypothesis : all) {
+      if (!hypothesis.counts())
+        continue;
+      low = low.cwiseMin(hypothesis.box.pose.position.head<2>());
+      high = high.cwiseMax(hypothesis.box.pose.position.head<2>());
+    }
+    if (low.x() > high.x())
+      return;
+    low_ = low;
+    columns_ = static_cast<long>(std::floor((high.x() - low.x()) / cell_)) + 1;
+    rows_ = static_cast<long>(std::floor((high.y() - low.y()) / cell_)) + 1;
+    cells_.resize(static_cast<std::size_t>(columns_ * rows_));
     for (std::size_t i = 0; i < all.size(); ++i) {
-      if (all[i].counts())
-        cells_[keyOf(all[i].box.pose.position.head<2>())].push_back(i);
+      if (all[i].counts()) {
+        const auto [column, row] = cellOf(all[i].box.pose.position.head<2>());
+        cells_[static_cast<std::size_t>(row * columns_ + column)].push_back(i);
+      }
     }
   }
 
@@ -71,29 +114,57 @@ class HypothesisGrid {
   std::vector<std::size_t> near(const HypothesisSet& hypotheses, const Eigen::Vector2d& point,
                                 double reach) const {
     std::vector<std::size_t> found;
-    const auto [cx, cy] = keyOf(point);
-    for (long dx = -1; dx <= 1; ++dx) {
-      for (long dy = -1; dy <= 1; ++dy) {
-        const auto cell = cells_.find({cx + dx, cy + dy});
-        if (cell == cells_.end())
+    if (cells_.empty())
+      return found;
+    // Marks instead of a sort: the order of the indices is kept without sorting thousands.
+    thread_local std::vector<char> marked;
+    marked.assign(count_, 0);
+    std::size_t first = count_, last = 0, hits = 0;
+    auto mark = [&](std::size_t i) {
+      marked[i] = 1;
+      first = std::min(first, i);
+      last = std::max(last, i);
+      ++hits;
+    };
+    const auto [low_column, low_row] = cellOf(point - Eigen::Vector2d::Constant(reach));
+    const auto [high_column, high_row] = cellOf(point + Eigen::Vector2d::Constant(reach));
+    for (long row = std::max(0L, low_row); row <= std::min(rows_ - 1, high_row); ++row) {
+      for (long column = std::max(0L, low_column); column <= std::min(columns_ - 1, high_column);
+           ++column) {
+        const std::vector<std::size_t>& cell =
+            cells_[static_cast<std::size_t>(row * columns_ + column)];
+        if (cell.empty())
           continue;
-        for (std::size_t i : cell->second) {
-          if ((hypotheses.hypotheses()[i].box.pose.position.head<2>() - point).norm() <= reach)
-            found.push_back(i);
-        }
+        const Eigen::Vector2d corner = low_ + cell_ * Eigen::Vector2d(column, row);
+        // The cell's farthest point from `point`: within reach, so is all of it.
+        const Eigen::Vector2d far_corner(
+            std::max(std::abs(corner.x() - point.x()), std::abs(corner.x() + cell_ - point.x())),
+            std::max(std::abs(corner.y() - point.y()), std::abs(corner.y() + cell_ - point.y())));
+        const bool inside = far_corner.norm() < reach * (1.0 - 1e-9);
+        for (std::size_t i : cell)
+          if (inside ||
+              (hypotheses.hypotheses()[i].box.pose.position.head<2>() - point).norm() <= reach)
+            mark(i);
       }
     }
-    std::sort(found.begin(), found.end());
+    found.reserve(hits);
+    for (std::size_t i = first; hits > 0 && i <= last; ++i)
+      if (marked[i])
+        found.push_back(i);
     return found;
   }
 
  private:
-  std::pair<long, long> keyOf(const Eigen::Vector2d& point) const {
-    return {static_cast<long>(std::floor(point.x() / cell_)),
-            static_cast<long>(std::floor(point.y() / cell_))};
+  static constexpr double kCellsPerReach = 4.0;
+  std::pair<long, long> cellOf(const Eigen::Vector2d& point) const {
+    return {static_cast<long>(std::floor((point.x() - low_.x()) / cell_)),
+            static_cast<long>(std::floor((point.y() - low_.y()) / cell_))};
   }
   double cell_;
-  std::map<std::pair<long, long>, std::vector<std::size_t>> cells_;
+  std::size_t count_;
+  Eigen::Vector2d low_ = Eigen::Vector2d::Zero();
+  long columns_ = 0, rows_ = 0;
+  std::vector<std::vector<std::size_t>> cells_;
 };
 
 // acos(q) rounded up to the table's resolution (never below it), for the heading windows: a
@@ -109,6 +180,12 @@ double arcCosineUpperBound(double q) {
   }();
   const double index = (q + 1.0) * (kEntries / 2.0);
   return table[std::clamp(static_cast<int>(index), 0, kEntries)];
+}
+
+// std::floor as a long without a library call (the heading windows' hot path).
+long floorToLong(double x) {
+  const long truncated = static_cast<long>(x);
+  return x < static_cast<double>(truncated) ? truncated - 1 : truncated;
 }
 
 // Headings of a level whose axis lies within an angle (its cosine `cosine`) of a direction
@@ -128,8 +205,8 @@ std::pair<long, long> headingWindow(const TiltLevel& level, double level_sine, d
     return {0, all};
   const double spread = arcCosineUpperBound(q) / level.heading_step;
   const double centre = (azimuth - level.first_heading) / level.heading_step;
-  const long first = static_cast<long>(std::floor(centre - spread));
-  const long last = static_cast<long>(std::ceil(centre + spread));
+  const long first = floorToLong(centre - spread);
+  const long last = -floorToLong(-(centre + spread));  // the ceiling
   if (last - first + 1 >= all)
     return {0, all};
   return {first, last - first + 1};
@@ -171,22 +248,21 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
   camera_reach_ += 0.01;  // the pan samples' margin
 }
 
-double NextBestViewPlanner::orientationBound(const Hypothesis& hypothesis,
+double NextBestViewPlanner::orientationBound(const PackedHypotheses& packed, std::size_t index,
                                              const Eigen::Vector3d& offset, double distance) const {
-  if (hypothesis.normals.empty())
-    return hypothesis.active[0] ? 1.0 : 0.0;
+  const std::uint32_t begin = packed.normals_begin[index], end = packed.normals_begin[index + 1];
+  if (begin == end)
+    return 1.0;  // recognisable from every side (only counting hypotheses are rated)
   // The camera is at -offset from the hypothesis.
+  const Eigen::Vector3d to_camera = -offset / distance;
   double best = 0.0;
-  for (std::size_t n = 0; n < hypothesis.normals.size(); ++n) {
-    if (hypothesis.active[n])
-      best = std::max(best,
-                      orientation_bound_.ofCosine(-hypothesis.normals[n].dot(offset) / distance));
-  }
+  for (std::uint32_t n = begin; n < end; ++n)
+    best = std::max(best, orientation_bound_.ofCosine(packed.normals[n].dot(to_camera)));
   return best;
 }
 
 void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
-                                      const std::vector<Eigen::Vector3d>& points,
+                                      const PackedHypotheses& packed,
                                       const std::vector<std::size_t>& nearby,
                                       const Eigen::Vector2d& position, std::size_t position_index,
                                       std::vector<Candidate>& candidates) const {
@@ -202,7 +278,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   utility.assign(orientations_.size() * type_count, 0.0);
   touched.assign(orientations_.size(), 0);
   for (std::size_t index : nearby) {
-    const Eigen::Vector3d& point = points[index];
+    const Eigen::Vector3d& point = packed.points[index];
     const Eigen::Vector2d across = point.head<2>() - position;
     const double horizontal = across.norm();
     double azimuth = std::numeric_limits<double>::quiet_NaN();  // when a level needs it
@@ -218,8 +294,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
       const double distance = offset.norm();
       if (distance <= frustum.near() || distance >= reach)
         continue;
-      const Hypothesis& hypothesis = hypotheses.hypotheses()[index];
-      const double orientation = orientationBound(hypothesis, offset, distance);
+      const double orientation = orientationBound(packed, index, offset, distance);
       if (orientation == 0.0)
         continue;
       if (std::isnan(azimuth))
@@ -229,8 +304,12 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
           headingWindow(level, level_sine_[l], level_cosine_[l], rise * inverse_distance,
                         horizontal * inverse_distance, azimuth, side_cosine);
       const long headings = static_cast<long>(level.headings);
-      long h = ((first % headings) + headings) % headings;
-      double* const row = utility.data() + hypothesis.type;
+      long h = first;  // within a few turns of the circle: no division needed
+      while (h < 0)
+        h += headings;
+      while (h >= headings)
+        h -= headings;
+      double* const row = utility.data() + packed.types[index];
       for (long k = 0; k < count; ++k, h = (h + 1 == headings) ? 0 : h + 1) {
         const std::size_t o = level.first_orientation + static_cast<std::size_t>(h);
         // Bounds of sideProximity's terms, as the orientation's above.
@@ -294,13 +373,15 @@ std::vector<double> NextBestViewPlanner::occludedUtility(const HypothesisSet& hy
 }
 
 void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
-                                        const std::vector<Eigen::Vector3d>& points,
+                                        const PackedHypotheses& packed,
                                         const std::vector<std::size_t>& nearby,
                                         const Eigen::Vector2d& position,
                                         std::vector<double>& per_type) const {
-  // The first pass's side term is at most 1 plus its table's margin: this factor covers it and
-  // the rounding of the sums.
+  // Covers the rounding of the sums (the tables' margins cover that of the terms).
   constexpr double kMargin = 1.0 + 1e-6;
+  // Covers the rounding of the cosine of the elevation difference.
+  constexpr double kCosineMargin = 1e-9;
+  constexpr double kOrientationAtMost = 1.0 + 1e-6;
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
   const double side_cosine = std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
   const double reach = frustum.far() / side_cosine;
@@ -308,7 +389,7 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
   const std::vector<TiltLevel>& levels = orientations_.levels();
   per_type.assign(hypotheses.types().size(), 0.0);
   for (std::size_t index : nearby) {
-    const Eigen::Vector3d& point = points[index];
+    const Eigen::Vector3d& point = packed.points[index];
     const double horizontal = (point.head<2>() - position).norm();
     double best = 0.0;
     for (std::size_t l = 0; l < levels.size(); ++l) {
@@ -321,13 +402,21 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
       const double distance = offset.norm();
       if (distance <= frustum.near() || distance >= reach)
         continue;
-      // Seen within the side angle, its depth lies in [side_cosine, 1] x distance.
-      const double low = side_cosine * distance;
-      const double gap = middle < low ? low - middle : std::max(0.0, middle - distance);
-      best = std::max(best, orientationBound(hypotheses.hypotheses()[index], offset, distance) *
-                                proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9)));
+      // Every axis of the level is at least the elevation difference away from the
+      // hypothesis, whatever its heading: that bounds the side term, and the depth
+      // (distance x the cosine of that angle) from above.
+      const double cosine = std::min(
+          1.0, (level_cosine_[l] * horizontal + level_sine_[l] * rise) / distance + kCosineMargin);
+      const double low = side_cosine * distance, high = cosine * distance;
+      const double gap = middle < low ? low - middle : std::max(0.0, middle - high);
+      const double terms =
+          side_bound_.ofCosine(cosine) * proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9));
+      // The orientation bound is at most 1 plus its table's margin: skipped where it cannot
+      // raise the best.
+      if (terms * kOrientationAtMost > best)
+        best = std::max(best, orientationBound(packed, index, offset, distance) * terms);
     }
-    per_type[hypotheses.hypotheses()[index].type] += kMargin * best;
+    per_type[packed.types[index]] += kMargin * best;
   }
 }
 
@@ -372,7 +461,7 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   forEachPosition(count, [&](std::size_t p) {
     if (state.nearby[p].empty())
       return;
-    positionBound(hypotheses, state.points, state.nearby[p], positions[p], type_bound[p]);
+    positionBound(hypotheses, state.packed, state.nearby[p], positions[p], type_bound[p]);
     total_bound[p] = std::accumulate(type_bound[p].begin(), type_bound[p].end(), 0.0);
   });
 
@@ -465,11 +554,8 @@ NextBestViewPlanner::StepState NextBestViewPlanner::startStep(
   const asr_robot_model::Frustum& frustum = parameters_.frustum;
   const double reach = frustum.far() / std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
   const HypothesisGrid grid(hypotheses, reach);
-  StepState state(positions, current);
+  StepState state(hypotheses, positions, current);
   state.type_count = hypotheses.countingTypes();
-  state.points.reserve(hypotheses.hypotheses().size());
-  for (const Hypothesis& hypothesis : hypotheses.hypotheses())
-    state.points.push_back(hypothesis.box.pose.position);
   state.nearby.resize(positions.size());
   forEachPosition(positions.size(), [&](std::size_t p) {
     state.nearby[p] = grid.near(hypotheses, positions[p], reach);
@@ -500,7 +586,7 @@ std::size_t NextBestViewPlanner::expand(const HypothesisSet& hypotheses, StepSta
   forEachPosition(end - next, [&](std::size_t i) {
     const std::size_t p = order[next + i];
     if (!state.expanded[p])
-      utilitiesAt(hypotheses, state.points, state.nearby[p], state.positions[p], p,
+      utilitiesAt(hypotheses, state.packed, state.nearby[p], state.positions[p], p,
                   state.candidates[p]);
     state.expanded[p] = 1;
   });
@@ -587,6 +673,21 @@ void NextBestViewPlanner::rateCandidate(const HypothesisSet& hypotheses, StepSta
   view.rating = value;
   view.costs = costs;
   view.motion_seconds = motion.seconds;
+}
+
+PositionBounds NextBestViewPlanner::boundsAt(const HypothesisSet& hypotheses,
+                                             const Eigen::Vector2d& position) const {
+  const std::vector<Eigen::Vector2d> positions{position};
+  StepState state = startStep(hypotheses, positions, RobotState{});
+  PositionBounds bounds;
+  positionBound(hypotheses, state.packed, state.nearby[0], position, bounds.position);
+  utilitiesAt(hypotheses, state.packed, state.nearby[0], position, 0, state.candidates[0]);
+  bounds.orientation.assign(orientations_.size(),
+                            std::vector<double>(hypotheses.types().size(), 0.0));
+  for (const Candidate& candidate : state.candidates[0])
+    for (const auto& [type, u] : candidate.per_type)
+      bounds.orientation[candidate.orientation][type] = u;
+  return bounds;
 }
 
 bool NextBestViewPlanner::reachable(const Eigen::Vector2d& camera) const {

@@ -195,6 +195,39 @@ TEST(Planner, BranchAndBoundChoosesTheExhaustiveSearchsView) {
   EXPECT_GE(found, 20);
 }
 
+// As above on clouds like the benchmark's: hundreds of poses per object, clustered on the
+// furniture, where each position's bound sums many hypotheses a single view cannot all see.
+TEST(Planner, BranchAndBoundChoosesTheExhaustiveSearchsViewOnLargeClusteredClouds) {
+  NbvParameters p;
+  p.max_steps = 2;
+  p.orientation_step = 15.0 * M_PI / 180.0;
+  const Scene scene(testing::furnishedRoom());
+  asr_ism::ThreadPool pool(2);
+  const std::vector<RobotState> starts{
+      {3.0, 2.4, 0.0, 0.0, 0.0}, {1.0, 3.5, -1.2, 0.0, 0.0}, {4.8, 1.2, 2.5, 0.0, 0.0}};
+  for (unsigned trial = 0; trial < starts.size(); ++trial) {
+    const std::size_t types = 4 + trial;
+    const HypothesisSet set(testing::cloudsOnFurniture(scene.world, types, 150, 40 + trial),
+                            testing::twoSidedCatalogue(types));
+    const PlannedView exhaustive = NextBestViewPlanner(robot(), scene.world, scene.map, p, nullptr,
+                                                       trial, CandidateSearch::exhaustive)
+                                       .plan(set, starts[trial]);
+    const PlannedView bounded =
+        NextBestViewPlanner(robot(), scene.world, scene.map, p, &pool, trial)
+            .plan(set, starts[trial]);
+    ASSERT_TRUE(exhaustive.found) << "trial " << trial;
+    ASSERT_TRUE(bounded.found) << "trial " << trial;
+    EXPECT_EQ(bounded.steps, exhaustive.steps) << "trial " << trial;
+    EXPECT_EQ(bounded.camera.position, exhaustive.camera.position) << "trial " << trial;
+    EXPECT_EQ(bounded.camera.orientation.coeffs(), exhaustive.camera.orientation.coeffs());
+    EXPECT_EQ(bounded.types, exhaustive.types) << "trial " << trial;
+    EXPECT_EQ(bounded.utility, exhaustive.utility) << "trial " << trial;
+    EXPECT_EQ(bounded.utility_max, exhaustive.utility_max) << "trial " << trial;
+    EXPECT_EQ(bounded.rating, exhaustive.rating) << "trial " << trial;
+    EXPECT_LT(bounded.rated.size(), exhaustive.rated.size());
+  }
+}
+
 TEST(Planner, UpdatingAfterTheChosenViewsEventuallyLeavesNothing) {
   const NbvParameters p;
   const Scene scene(testing::furnishedRoom());

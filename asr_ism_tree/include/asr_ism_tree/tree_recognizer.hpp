@@ -28,6 +28,12 @@ struct TreeRecognitionParameters {
   /// instead of with the cube of their number. false: every estimate enters (the exhaustive
   /// search, with which every combination of repeated detections is tried).
   bool merge_repeated_detections = true;
+  /// With `exact_best`, where repeated detections were merged: the exact search asks whether any
+  /// combination of every estimate beats the best over the representatives, so the best
+  /// instance is that of every estimate, within the exact search's limits
+  /// (TreeRecognitionStats::repeat_searches_given_up says where they ran out). false: the best
+  /// over the representatives, which can be lower (docs/recognition.md).
+  bool exact_over_repeats = true;
   /// Makes the best instance that of the exhaustive search (`pass_every_result`): after the first
   /// evaluation, every sub-ISM is asked for every further result that could still be part of a
   /// better instance (exact_best_search.hpp). Seeing an object badly then never scores lower than
@@ -55,8 +61,11 @@ struct ExactSearchBudget;
 struct TreeRecognitionStats {
   asr_ism::IsmRecognitionStats isms;  // summed over the tree's ISMs
   std::size_t root_results = 0;
-  std::size_t merged_estimates = 0;          // repeated detections left out, summed over labellings
-  std::size_t exact_searches_given_up = 0;   // over labellings
+  std::size_t merged_estimates = 0;         // repeated detections left out, summed over labellings
+  std::size_t exact_searches_given_up = 0;  // over labellings
+  /// Searches over every repeated detection given up (over labellings): there the best over the
+  /// representatives stands, and may fall short of the exhaustive search's.
+  std::size_t repeat_searches_given_up = 0;
   std::size_t exact_search_comparisons = 0;  // spent by the exact search (within isms as well)
 };
 
@@ -98,12 +107,25 @@ class TreeRecognizer {
                    const std::vector<Pose>& poses,
                    const std::vector<std::vector<int>>& estimates_of_object,
                    asr_ism::IsmRecognitionStats& stats, ExactSearchBudget* budget = nullptr) const;
+  // `with_repeats`: every estimate per object where `estimates_of_object` are the
+  // representatives of repeated detections, nullptr where nothing was merged.
   TreeEvaluation evaluateIsms(const std::vector<Pose>& poses,
                               const std::vector<std::vector<int>>& estimates_of_object,
+                              const std::vector<std::vector<int>>* with_repeats,
                               TreeRecognitionStats* stats, ExactSearchBudget& budget) const;
-  // Per object, one estimate for each group of repeated detections.
-  void mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
-                     const std::vector<Pose>& poses, TreeRecognitionStats* stats) const;
+  // The exact search (exact_best_search.hpp) from the results in `evaluated`, which are those of
+  // a first evaluation over `estimates_of_object` or, `from_lower_bounds`, over a subset of them.
+  // True if the root holds its results; false where nothing could be better or the budget ran
+  // out (counted in `given_up`).
+  bool searchExactly(std::vector<EvaluatedIsm>& evaluated, bool from_lower_bounds,
+                     const std::vector<Pose>& poses,
+                     const std::vector<std::vector<int>>& estimates_of_object,
+                     std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
+                     ExactSearchBudget& budget, std::size_t* given_up) const;
+  // Per object, one estimate for each group of repeated detections; returns how many were left
+  // out.
+  std::size_t mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
+                            const std::vector<Pose>& poses) const;
   SceneInstance assembleInstance(const std::vector<EvaluatedIsm>& evaluated,
                                  std::size_t root_result, const std::vector<Pose>& poses,
                                  const std::vector<std::vector<int>>& estimates_of_object) const;

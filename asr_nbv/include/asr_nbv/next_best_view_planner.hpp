@@ -58,6 +58,13 @@ struct RatedViews {
   double utility_max = 0.0;  // the largest utility (all types) among the views
 };
 
+/// The bounds the bounded search rates by at one camera floor position, per type (for tests:
+/// neither may fall below the utility, occlusion aside, of any view they bound).
+struct PositionBounds {
+  std::vector<double> position;                  // >= every orientation's
+  std::vector<std::vector<double>> orientation;  // the first pass's, per candidate orientation
+};
+
 /// How a step's candidates are rated. `bounded`: branch and bound over lattice positions (the
 /// default); `exhaustive`: every position and orientation rated in full, the reference the
 /// bounded search must equal (tests; far slower).
@@ -88,11 +95,17 @@ class NextBestViewPlanner {
   RatedViews rateViews(const HypothesisSet& hypotheses, const std::vector<VisitedView>& views,
                        const asr_robot_model::RobotState& current) const;
 
+  /// The bounds at `position` (camera floor point) for `hypotheses`.
+  PositionBounds boundsAt(const HypothesisSet& hypotheses, const Eigen::Vector2d& position) const;
+  /// The candidate orientations (camera_optical_frame in map) and the camera height of each.
+  const CandidateOrientations& orientations() const { return orientations_; }
+
   const NbvParameters& parameters() const { return parameters_; }
   const asr_robot_model::InverseKinematics& kinematics() const { return kinematics_; }
 
  private:
   struct Candidate;
+  struct PackedHypotheses;
   struct Step;
   struct StepState;
   Step rateStep(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
@@ -102,8 +115,9 @@ class NextBestViewPlanner {
                             const asr_robot_model::RobotState& current) const;
   /// Per type, >= the first pass's utility of every orientation at `position` (so >= the exact
   /// utility of every view from there): each nearby hypothesis counted once, with the best
-  /// orientation and proximity terms any tilt level can give it.
-  void positionBound(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector3d>& points,
+  /// orientation, side and proximity terms any tilt level can give it (the side term from the
+  /// elevation difference to the level's axis, which no heading can undercut).
+  void positionBound(const HypothesisSet& hypotheses, const PackedHypotheses& packed,
                      const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
                      std::vector<double>& per_type) const;
   StepState startStep(const HypothesisSet& hypotheses,
@@ -131,14 +145,13 @@ class NextBestViewPlanner {
   /// bound with the exact utility cannot beat it.
   void rateCandidate(const HypothesisSet& hypotheses, StepState& state, Candidate& candidate,
                      bool prune, double& best_rating, Step& step) const;
-  /// `points`: the hypotheses' positions, as hypotheses.hypotheses() holds them.
-  void utilitiesAt(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector3d>& points,
+  void utilitiesAt(const HypothesisSet& hypotheses, const PackedHypotheses& packed,
                    const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
                    std::size_t position_index, std::vector<Candidate>& candidates) const;
   /// >= orientationUtility of the hypothesis seen from the camera at `offset` from it
   /// (`distance` its length), by table look-up.
-  double orientationBound(const Hypothesis& hypothesis, const Eigen::Vector3d& offset,
-                          double distance) const;
+  double orientationBound(const PackedHypotheses& packed, std::size_t index,
+                          const Eigen::Vector3d& offset, double distance) const;
   /// False if no base position within camera_reach_ of the camera's floor point (sampled on
   /// its circle) is free: the camera cannot be carried there.
   bool reachable(const Eigen::Vector2d& camera) const;
