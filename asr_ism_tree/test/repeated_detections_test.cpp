@@ -195,7 +195,7 @@ TEST_F(RepeatedDetectionsInATree, WorkDoesNotGrowWithRepeats) {
   // follows is bounded by the exact search's limit, and where it runs out the merged best stands.
   TreeRecognitionParameters merged_only, limited;
   merged_only.exact_over_repeats = false;
-  limited.exact_search_max_comparisons = 100000;
+  limited.exact_search_max_comparisons = 20000;
   // Every detection jittered (the first copy is the recorded set), so the merged best falls
   // short of the bound and the search over every repeat runs.
   Configuration fifty_jittered = jittered(51, 3);
