@@ -36,8 +36,9 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   const bool clutter_only = options.flag("clutter-only");
   std::vector<SceneRow> scene_rows;
   std::vector<ClutterRow> clutter_rows;
-  if (const auto recordings = asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR,
-                                                                   "asr_bench", progress)) {
+  const auto recordings =
+      asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress);
+  if (recordings) {
     progress << "kitchen scenes from " << *recordings << "\n";
     if (!clutter_only)
       scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
@@ -70,7 +71,7 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   if (!scene_rows.empty()) {
     printSceneTable(std::cout, scene_rows, settings);
     std::cout << "\n";
-  } else {
+  } else if (!recordings) {
     std::cout << "Kitchen scenes: skipped, recordings folder not found\n\n";
   }
   if (!clutter_rows.empty()) {
