@@ -55,8 +55,15 @@ std::string fixed(double value, int digits) {
   return text;
 }
 
+// Writes `line` from `at`; a line too long for the room left to the right edge is written
+// smaller so that it ends inside the picture (long object names with their scenes).
 void text(cv::Mat& image, const std::string& line, cv::Point at, const cv::Scalar& ink,
           double size = 0.45) {
+  const int room = image.cols - 4 - at.x;
+  int baseline = 0;
+  const int width = cv::getTextSize(line, cv::FONT_HERSHEY_SIMPLEX, size, 1, &baseline).width;
+  if (room > 0 && width > room)
+    size *= static_cast<double>(room) / width;
   cv::putText(image, line, at, cv::FONT_HERSHEY_SIMPLEX, size, ink, 1, cv::LINE_AA);
 }
 
