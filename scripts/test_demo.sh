@@ -11,6 +11,8 @@ RESULT="$2"
 TIMEOUT_S="${ASR_DEMO_TIMEOUT_S:-900}"
 # shellcheck source=junit_result.sh
 source "$ROOT/scripts/junit_result.sh"
+# shellcheck source=await_session.sh
+source "$ROOT/scripts/await_session.sh"
 write_result() { junit_result "$RESULT" demo KitchenSearchFromAFreshStart "$1" "$2"; }
 
 recordings="${ASR_RECORDINGS_DIR:-$ROOT/../shared/data/asr_recordings}"
@@ -28,18 +30,9 @@ echo "demo test: running scripts/demo.sh into $out"
 start=$(date +%s)
 # In a session of its own, so that what a hung demo leaves running is ended by its id alone.
 ASR_DEMO_MODELS="$models" setsid "$ROOT/scripts/demo.sh" "$DEVEL" "$out" >"$work/output.txt" 2>&1 &
-demo=$!
-while kill -0 "$demo" 2>/dev/null && [ $(($(date +%s) - start)) -lt "$TIMEOUT_S" ]; do
-  sleep 1
-done
-if kill -0 "$demo" 2>/dev/null; then
-  echo "demo test: still running after $TIMEOUT_S s, stopped" >>"$work/output.txt"
-  kill -INT -- -"$demo" 2>/dev/null && sleep 10
-  kill -KILL -- -"$demo" 2>/dev/null
-fi
-wait "$demo"
-status=$?
-seconds=$(($(date +%s) - start))
+await_session $! "$start" "$TIMEOUT_S" "$work/output.txt" "demo test"
+status=$session_status
+seconds=$session_seconds
 
 problems=""
 [ "$status" -ne 0 ] && problems="exit code $status after $seconds s; "

@@ -14,6 +14,8 @@ mkdir -p "$(dirname "$RESULT")"
 
 # shellcheck source=junit_result.sh
 source "$ROOT/scripts/junit_result.sh"
+# shellcheck source=await_session.sh
+source "$ROOT/scripts/await_session.sh"
 # Writes the JUnit result: $1 = passed | failed | skipped, $2 = message.
 write_result() { junit_result "$RESULT" readme RosWalkthroughRunsAsWritten "$1" "$2"; }
 
@@ -50,18 +52,9 @@ start=$(date +%s)
     exec env PATH="$work/bin:/usr/bin:$PATH" ROS_MASTER_URI="http://localhost:$port" \
       ROS_LOG_DIR="$work/log" setsid bash -e "$work/walkthrough.sh"
 ) >"$work/output.txt" 2>&1 &
-walkthrough=$!
-while kill -0 "$walkthrough" 2>/dev/null && [ $(($(date +%s) - start)) -lt "$TIMEOUT_S" ]; do
-  sleep 1
-done
-if kill -0 "$walkthrough" 2>/dev/null; then
-  echo "readme walkthrough: still running after $TIMEOUT_S s, stopped" >>"$work/output.txt"
-fi
-kill -INT -- -"$walkthrough" 2>/dev/null && sleep 10
-kill -KILL -- -"$walkthrough" 2>/dev/null
-wait "$walkthrough"
-status=$?
-seconds=$(($(date +%s) - start))
+await_session $! "$start" "$TIMEOUT_S" "$work/output.txt" "readme walkthrough"
+status=$session_status
+seconds=$session_seconds
 cp "$work/output.txt" "$ROOT/out/walkthrough/output.txt" 2>/dev/null || true
 
 problems=""
