@@ -30,7 +30,9 @@ struct ExactSearchTooLarge {};
 struct ExactSearchBudget {
   std::size_t max_votes;         // per evaluation of one ISM
   std::size_t comparisons_left;  // vote-to-hypothesis comparisons
+  std::size_t votes_left;        // cast over all evaluations
   std::size_t comparisons_used = 0;
+  std::size_t votes_used = 0;
 };
 
 // The first evaluation (a few results per sub-ISM) and, where its best instance may not be the
@@ -249,8 +251,10 @@ void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>
   std::size_t votes = 0;
   for (const IsmInput& input : inputs)
     votes += members[input.member].relative_poses.size();
-  if (votes > budget->max_votes)
+  if (votes > budget->max_votes || votes > budget->votes_left)
     throw ExactSearchTooLarge{};
+  budget->votes_left -= votes;
+  budget->votes_used += votes;
   selection.max_comparisons = budget->comparisons_left;
   asr_ism::IsmRecognitionStats spent;
   try {
@@ -435,7 +439,8 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
     *stats = TreeRecognitionStats{};
   std::vector<SceneInstance> instances;
   ExactSearchBudget budget{parameters_.exact_search_max_votes,
-                           parameters_.exact_search_max_comparisons};
+                           parameters_.exact_search_max_comparisons,
+                           parameters_.exact_search_max_total_votes};
   for (std::size_t labelling = 0; labelling < labellings; ++labelling) {
     const auto every_estimate =
         matching.estimatesOfObjects(labelling, tree_.objects().size(), canonical);
@@ -458,8 +463,10 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
         instances.push_back(std::move(instance));
     }
   }
-  if (stats != nullptr)
+  if (stats != nullptr) {
     stats->exact_search_comparisons = budget.comparisons_used;
+    stats->exact_search_votes = budget.votes_used;
+  }
   // Best first; the root's order (which breaks ties by the model) within one labelling.
   std::stable_sort(instances.begin(), instances.end(), [](const auto& a, const auto& b) {
     return a.confidence > b.confidence + 1e-12;

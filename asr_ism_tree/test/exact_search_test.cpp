@@ -160,5 +160,41 @@ TEST_F(ExactSearch, WorkIsBoundedAndWhereItRunsOutTheFirstBestStands) {
   EXPECT_GT(completed, 0);
 }
 
+TEST_F(ExactSearch, VotesCastOverTheWholeRecognitionAreBounded) {
+  // The total of votes cast by the exact search, over all its ISM evaluations, stays within its
+  // cap; where it runs out, the first evaluation's best stands.
+  TreeRecognitionParameters few;
+  few.exact_best = false;
+  TreeRecognitionParameters small_budget;
+  small_budget.exact_search_max_total_votes = 150;
+  std::mt19937 random(9);
+  int given_up = 0, completed = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    const Configuration configuration = randomCase(random);
+    for (const auto& [name, tree] : trees_) {
+      TreeRecognitionStats stats, unbounded_stats;
+      const double bounded =
+          bestConfidence(TreeRecognizer(tree, small_budget).recognize(configuration, &stats));
+      const double exact =
+          bestConfidence(TreeRecognizer(tree).recognize(configuration, &unbounded_stats));
+      EXPECT_LE(stats.exact_search_votes, small_budget.exact_search_max_total_votes)
+          << name << ", case " << trial;
+      if (unbounded_stats.exact_search_votes > small_budget.exact_search_max_total_votes) {
+        EXPECT_GT(stats.exact_searches_given_up, 0u) << name << ", case " << trial;
+      }
+      if (stats.exact_searches_given_up > 0) {
+        ++given_up;
+        EXPECT_EQ(bounded, bestConfidence(TreeRecognizer(tree, few).recognize(configuration)))
+            << name << ", case " << trial;
+      } else {
+        ++completed;
+        EXPECT_NEAR(bounded, exact, 1e-9) << name << ", case " << trial;
+      }
+    }
+  }
+  EXPECT_GT(given_up, 0);
+  EXPECT_GT(completed, 0);
+}
+
 }  // namespace
 }  // namespace asr_ism_tree

@@ -42,13 +42,23 @@ struct TreeRecognitionParameters {
   /// The exact search gives up (and the first evaluation's best stands) where it would cast more
   /// votes than this in one ISM: near-duplicate results of sub-ISMs that all could still matter
   /// multiply up the tree. TreeRecognitionStats::exact_searches_given_up counts such cases.
-  std::size_t exact_search_max_votes = 5000;
+  /// (5,000 before the vote search skipped votes below its floor: 20,000 lets the searches of
+  /// six of the ten kitchen scenes and office2016 complete in nearly every property case. Higher,
+  /// the comparisons cap below decides more often, and the comparisons a search makes depend on
+  /// where the bin grid falls: the same scene moved rigidly could then give up in one frame and
+  /// not in the other, as 60,000 did in Spuelkorb_3.)
+  std::size_t exact_search_max_votes = 20000;
   /// ... and where, over all its ISMs (and every assignment of id-less estimates), it would make
   /// more vote-to-hypothesis comparisons than this in one recognition: the bound on its work, so
   /// that no input can hold a caller for long (20-50 ns per comparison on the 2-core development
   /// machine, so at most 0.1-0.25 s; `asr bench exact`, docs/recognition.md). A count, not a
   /// clock: the outcome does not depend on the machine or its load.
   std::size_t exact_search_max_comparisons = 5000000;
+  /// ... and where it would cast more votes than this over all its ISM evaluations (and
+  /// assignments) in one recognition: casting, binning and gathering a vote cost about 2 us on
+  /// the development machine (0.2 s for all), which the comparisons do not count. With both
+  /// caps one recognition's exact search stays below about 0.5 s (docs/recognition.md).
+  std::size_t exact_search_max_total_votes = 100000;
   /// Every sub-ISM passes every result up (of results at one pose, the best): the exhaustive
   /// search, slow beyond small scenes; what the exact search is tested against.
   bool pass_every_result = false;
@@ -67,6 +77,7 @@ struct TreeRecognitionStats {
   /// representatives stands, and may fall short of the exhaustive search's.
   std::size_t repeat_searches_given_up = 0;
   std::size_t exact_search_comparisons = 0;  // spent by the exact search (within isms as well)
+  std::size_t exact_search_votes = 0;        // cast by the exact search (within isms as well)
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
