@@ -31,9 +31,9 @@ using asr_common::testing::recording;
 
 constexpr double kDegree = M_PI / 180.0;
 // How much lower than without it a badly seen object may leave the best instance of a tree: where
-// the exact search completes (exact_best_search.hpp), rounding only; where it gives up (more
-// than `exact_search_max_votes` in one ISM), the first evaluation's best stands, which passed up
-// a few results per sub-ISM (the largest shortfalls measured over these cases are printed).
+// the exact search completes (exact_best_search.hpp), rounding only; where it gives up (beyond
+// its votes or comparisons caps), the first evaluation's best stands, which passed up a few
+// results per sub-ISM (the largest shortfalls measured over these cases are printed).
 constexpr double kExactTolerance = 1e-9;
 constexpr double kTreeTolerance = 0.05;
 
