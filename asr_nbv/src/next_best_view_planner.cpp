@@ -331,16 +331,16 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
                                         const HypothesisGroups& groups,
                                         const std::vector<std::uint32_t>& nearby,
                                         const Eigen::Vector2d& position,
-                                        std::vector<double>& per_type) const {
+                                        std::vector<double>& per_level_type) const {
   // Covers the rounding of the sums (the tables' margins cover that of the terms).
   constexpr double kMargin = 1.0 + 1e-6;
   // Covers the rounding of the cosine of the elevation difference.
   constexpr double kCosineMargin = 1e-9;
-  constexpr double kOrientationAtMost = 1.0 + 1e-6;
   const double near = parameters_.frustum.near();
+  const std::size_t type_count = hypotheses.types().size();
   const std::vector<TiltLevel>& levels = orientations_.levels();
   std::vector<char> passing(levels.size());
-  per_type.assign(hypotheses.types().size(), 0.0);
+  per_level_type.assign(levels.size() * type_count, 0.0);
   for (std::uint32_t g : nearby) {
     const HypothesisGroups::Group& group = groups.groups()[g];
     if (!groupLevels(group, position, passing))
@@ -348,7 +348,6 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
     for (std::uint32_t m = group.begin; m < group.end; ++m) {
       const Eigen::Vector3d& point = groups.point(m);
       const double horizontal = (point.head<2>() - position).norm();
-      double best = 0.0;
       for (std::size_t l = 0; l < levels.size(); ++l) {
         if (!passing[l])
           continue;
@@ -371,17 +370,25 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
         const double gap = middle_ < low ? low - middle_ : std::max(0.0, middle_ - high);
         const double terms =
             side_bound_.ofCosine(cosine) * proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9));
-        // The orientation bound is at most 1 plus its table's margin: skipped where it cannot
-        // raise the best.
-        if (terms * kOrientationAtMost > best)
-          best = std::max(best, orientationBound(groups, m, offset, distance) * terms);
+        if (terms > 0.0)
+          per_level_type[l * type_count + group.type] +=
+              kMargin * orientationBound(groups, m, offset, distance) * terms;
       }
-      per_type[group.type] += kMargin * best;
     }
   }
 }
 
 namespace {
+
+// Level l's bounds per type in a level x type table.
+std::vector<double> levelSlice(const std::vector<double>& table, std::size_t l, std::size_t types) {
+  return {table.begin() + static_cast<long>(l * types),
+          table.begin() + static_cast<long>((l + 1) * types)};
+}
+double levelTotal(const std::vector<double>& table, std::size_t l, std::size_t types) {
+  return std::accumulate(table.begin() + static_cast<long>(l * types),
+                         table.begin() + static_cast<long>((l + 1) * types), 0.0);
+}
 
 // Indices of `values` >= 0 in falling order of value, ties in index order.
 std::vector<std::size_t> fallingOrder(const std::vector<double>& values) {
@@ -417,13 +424,15 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   // Branch and bound over the positions: a bound per position and type first (cheap, one term
   // per hypothesis), then the first pass (every orientation) only where the bound can still win.
   const std::size_t count = positions.size();
-  std::vector<std::vector<double>> type_bound(count);
-  std::vector<double> total_bound(count, -1.0);
+  const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
+  std::vector<std::vector<double>> level_bound(count);  // level x type
+  std::vector<double> total_bound(count, -1.0);         // the largest level's
   forEachPosition(count, [&](std::size_t p) {
     if (state.nearby[p].empty())
       return;
-    positionBound(hypotheses, groups, state.nearby[p], positions[p], type_bound[p]);
-    total_bound[p] = std::accumulate(type_bound[p].begin(), type_bound[p].end(), 0.0);
+    positionBound(hypotheses, groups, state.nearby[p], positions[p], level_bound[p]);
+    for (std::size_t l = 0; l < levels; ++l)
+      total_bound[p] = std::max(total_bound[p], levelTotal(level_bound[p], l, types));
   });
 
   // The normaliser: the largest exact utility. Occlusion only lowers utilities, so the first
@@ -474,12 +483,19 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   // none can beat the best; a position's bound (its types' bounds) is at least its candidates',
   // so a position is expanded only once its bound reaches the best candidate waiting.
   std::vector<double> position_rating(count, -1.0);
-  for (std::size_t p = 0; p < count; ++p)
-    if (total_bound[p] > 0.0 &&
-        !(state.worth_moving && total_bound[p] <= parameters_.min_utility_for_moving))
-      position_rating[p] = ratingBound(
-          bestTypeSubset(type_bound[p], utility_max, state.type_count, parameters_.weights),
-          positions[p], state);
+  for (std::size_t p = 0; p < count; ++p) {
+    if (state.nearby[p].empty())
+      continue;
+    for (std::size_t l = 0; l < levels; ++l) {
+      const double total = levelTotal(level_bound[p], l, types);
+      if (total > 0.0 && !(state.worth_moving && total <= parameters_.min_utility_for_moving))
+        position_rating[p] =
+            std::max(position_rating[p],
+                     ratingBound(bestTypeSubset(levelSlice(level_bound[p], l, types), utility_max,
+                                                state.type_count, parameters_.weights),
+                                 positions[p], state));
+    }
+  }
   const std::vector<std::size_t> by_rating = fallingOrder(position_rating);
   std::priority_queue<Queued> queue;
   std::vector<char> queued(count, 0);
@@ -712,7 +728,15 @@ PositionBounds NextBestViewPlanner::boundsAt(const HypothesisSet& hypotheses,
   const HypothesisGroups groups(hypotheses, kGroupCell, reach_);
   StepState state = startStep(hypotheses, groups, positions, RobotState{});
   PositionBounds bounds;
-  positionBound(hypotheses, groups, state.nearby[0], position, bounds.position);
+  std::vector<double> level_bound;
+  positionBound(hypotheses, groups, state.nearby[0], position, level_bound);
+  const std::size_t types = hypotheses.types().size();
+  bounds.position.assign(types, 0.0);
+  for (std::size_t l = 0; l < orientations_.levels().size(); ++l) {
+    bounds.level.push_back(levelSlice(level_bound, l, types));
+    for (std::size_t t = 0; t < types; ++t)
+      bounds.position[t] = std::max(bounds.position[t], bounds.level[l][t]);
+  }
   utilitiesAt(hypotheses, groups, state.nearby[0], position, 0, state.candidates[0]);
   bounds.orientation.assign(orientations_.size(),
                             std::vector<double>(hypotheses.types().size(), 0.0));

@@ -88,6 +88,7 @@ void checkBoundsOnRandomScenes(bool clustered) {
     const CandidateOrientations& orientations = planner.orientations();
     ASSERT_EQ(bounds.orientation.size(), orientations.size());
     ASSERT_EQ(bounds.unoccluded.size(), orientations.size());
+    ASSERT_EQ(bounds.level.size(), orientations.levels().size());
     for (std::size_t o = 0; o < orientations.size(); ++o) {
       const TiltLevel& level = orientations.levels()[orientations.levelOf(o)];
       const Pose camera(Eigen::Vector3d(position.x(), position.y(), level.camera_height),
@@ -98,7 +99,9 @@ void checkBoundsOnRandomScenes(bool clustered) {
             << "trial " << trial << " orientation " << o << " type " << t;
         EXPECT_GE(bounds.orientation[o][t], exact.per_type[t])
             << "trial " << trial << " orientation " << o << " type " << t;
-        EXPECT_GE(bounds.position[t], bounds.orientation[o][t])
+        EXPECT_GE(bounds.level[orientations.levelOf(o)][t], bounds.orientation[o][t])
+            << "trial " << trial << " orientation " << o << " type " << t;
+        EXPECT_GE(bounds.position[t], bounds.level[orientations.levelOf(o)][t])
             << "trial " << trial << " orientation " << o << " type " << t;
         ++compared;
         seen += exact.per_type[t] > 0.0;

@@ -62,7 +62,9 @@ struct RatedViews {
 /// The bounds the bounded search rates by at one camera floor position, per type (for tests:
 /// neither may fall below the utility, occlusion aside, of any view they bound).
 struct PositionBounds {
-  std::vector<double> position;                  // >= every orientation's
+  std::vector<double> position;            // >= every level's
+  std::vector<std::vector<double>> level;  // per tilt level, >= its orientations'
+
   std::vector<std::vector<double>> orientation;  // the first pass's, per candidate orientation
   /// Per candidate orientation, the utility without occlusion as the planner sums it before
   /// casting lines of sight (groups of hypotheses that cannot be in view skipped): must equal
@@ -119,13 +121,15 @@ class NextBestViewPlanner {
   Step rateStepExhaustively(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                             const std::vector<Eigen::Vector2d>& positions,
                             const asr_robot_model::RobotState& current) const;
-  /// Per type, >= the first pass's utility of every orientation at `position` (so >= the exact
-  /// utility of every view from there): each nearby hypothesis counted once, with the best
-  /// orientation, side and proximity terms any tilt level can give it (the side term from the
-  /// elevation difference to the level's axis, which no heading can undercut).
+  /// Per tilt level and type (level x type), >= the first pass's utility of every orientation
+  /// of the level at `position` (so >= the exact utility of every view from there): each
+  /// nearby hypothesis counted once, with the best orientation, side and proximity terms the
+  /// level can give it (the side term from the elevation difference to the level's axis, which
+  /// no heading can undercut). A view has one level: the largest level's bound is its
+  /// position's, tighter than each hypothesis at its best level would give.
   void positionBound(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                      const std::vector<std::uint32_t>& nearby, const Eigen::Vector2d& position,
-                     std::vector<double>& per_type) const;
+                     std::vector<double>& per_level_type) const;
   /// passing[l]: whether a member of `group` may be seen from `position` at tilt level l;
   /// false if none can at any.
   bool groupLevels(const HypothesisGroups::Group& group, const Eigen::Vector2d& position,
