@@ -55,7 +55,7 @@ struct NextBestViewPlanner::StepState {
   const HypothesisGroups& groups;
   std::vector<std::vector<std::uint32_t>> nearby;  // groups
   std::vector<std::vector<Candidate>> candidates;  // per position, once expanded
-  std::vector<char> expanded;
+  std::vector<char> expanded;                      // per position and tilt level
   // Lines of sight from a camera position (lattice point and tilt level's height) to its
   // nearby hypotheses, cast once for all the orientations rated there.
   std::vector<std::vector<signed char>> sight;
@@ -200,6 +200,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
                                       const HypothesisGroups& groups,
                                       const std::vector<std::uint32_t>& nearby,
                                       const Eigen::Vector2d& position, std::size_t position_index,
+                                      const std::vector<char>& wanted,
                                       std::vector<Candidate>& candidates) const {
   const double near = parameters_.frustum.near();
   const std::size_t type_count = hypotheses.types().size();
@@ -214,6 +215,8 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
     // Levels none of the group's members can be seen from are skipped for all of them.
     if (!groupLevels(group, position, passing))
       continue;
+    for (std::size_t l = 0; l < levels.size(); ++l)
+      passing[l] = passing[l] && wanted[l];
     double* const row = utility.data() + group.type;
     for (std::uint32_t m = group.begin; m < group.end; ++m) {
       const Eigen::Vector3d& point = groups.point(m);
@@ -403,14 +406,19 @@ std::vector<std::size_t> fallingOrder(const std::vector<double>& values) {
 
 // A candidate waiting to be rated, in the order of the exhaustive search over bounds: falling
 // bound, then position, then its index at the position.
+// `key`: the candidate's orientation, or kLevelKey + l for a tilt level not yet expanded (so
+// the order does not depend on the order candidates were found in); `index`: the candidate's
+// among its position's.
+constexpr std::size_t kLevelKey = std::numeric_limits<std::size_t>::max() / 2;
 struct Queued {
   double bound;
-  std::size_t position, index;
+  std::size_t position, key, index;
   bool operator<(const Queued& other) const {  // "rated after" for std::priority_queue
     if (bound != other.bound)
       return bound < other.bound;
-    return std::tie(position, index) > std::tie(other.position, other.index);
+    return std::tie(position, key) > std::tie(other.position, other.key);
   }
+  bool isLevel() const { return key >= kLevelKey; }
 };
 
 }  // namespace
@@ -439,16 +447,15 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   // pass bounds them: best first, positions (by their bound, expanded a batch at a time) and
   // their candidates (by the first pass's) from one queue, until no bound exceeds the largest
   // exact utility found; lines of sight are cast only for the candidates taken from it.
-  constexpr std::size_t kWholePosition = std::numeric_limits<std::size_t>::max();
   double& utility_max = state.utility_max;
   std::priority_queue<Queued> best_first;
   for (std::size_t p = 0; p < count; ++p)
-    if (total_bound[p] > 0.0)
-      best_first.push({total_bound[p], p, kWholePosition});
-  std::vector<std::size_t> batch;
-  auto always = [](std::size_t) { return true; };
+    for (std::size_t l = 0; p < count && !state.nearby[p].empty() && l < levels; ++l)
+      if (const double total = levelTotal(level_bound[p], l, types); total > 0.0)
+        best_first.push({total, p, kLevelKey + l, 0});
+  std::vector<std::pair<std::size_t, std::size_t>> batch;
   while (!best_first.empty() && best_first.top().bound > utility_max) {
-    if (best_first.top().index != kWholePosition) {
+    if (!best_first.top().isLevel()) {
       // A candidate: first by its utility without occlusion (no line of sight cast), then,
       // if that still exceeds the best, exactly.
       const Queued top = best_first.top();
@@ -456,23 +463,25 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
       Candidate& candidate = state.candidates[top.position][top.index];
       if (candidate.unoccluded_total < 0.0) {
         if (unoccludedUtility(hypotheses, state, candidate) > utility_max)
-          best_first.push({candidate.unoccluded_total, top.position, top.index});
+          best_first.push({candidate.unoccluded_total, top.position, top.key, top.index});
         continue;
       }
       utility_max = std::max(utility_max, exactUtility(hypotheses, state, candidate));
       continue;
     }
     batch.clear();
-    while (batch.size() < batchSize() && !best_first.empty() &&
-           best_first.top().index == kWholePosition && best_first.top().bound > utility_max) {
-      batch.push_back(best_first.top().position);
+    while (batch.size() < batchSize() && !best_first.empty() && best_first.top().isLevel() &&
+           best_first.top().bound > utility_max) {
+      batch.emplace_back(best_first.top().position, best_first.top().key - kLevelKey);
       best_first.pop();
     }
-    expand(hypotheses, state, batch, 0, always);
-    for (std::size_t p : batch)
-      for (std::size_t k = 0; k < state.candidates[p].size(); ++k)
-        if (state.candidates[p][k].total > utility_max)
-          best_first.push({state.candidates[p][k].total, p, k});
+    expand(hypotheses, state, batch);
+    for (const auto& [p, l] : batch)
+      for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
+        const Candidate& candidate = state.candidates[p][k];
+        if (orientations_.levelOf(candidate.orientation) == l && candidate.total > utility_max)
+          best_first.push({candidate.total, p, candidate.orientation, k});
+      }
   }
   Step step;
   if (utility_max <= 0.0)
@@ -482,41 +491,39 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   // The rating: candidates in falling order of their bound (motion free, no occlusion) until
   // none can beat the best; a position's bound (its types' bounds) is at least its candidates',
   // so a position is expanded only once its bound reaches the best candidate waiting.
-  std::vector<double> position_rating(count, -1.0);
+  std::vector<double> level_rating(count * levels, -1.0);  // position x level
   for (std::size_t p = 0; p < count; ++p) {
-    if (state.nearby[p].empty())
-      continue;
-    for (std::size_t l = 0; l < levels; ++l) {
+    for (std::size_t l = 0; l < levels && !state.nearby[p].empty(); ++l) {
       const double total = levelTotal(level_bound[p], l, types);
       if (total > 0.0 && !(state.worth_moving && total <= parameters_.min_utility_for_moving))
-        position_rating[p] =
-            std::max(position_rating[p],
-                     ratingBound(bestTypeSubset(levelSlice(level_bound[p], l, types), utility_max,
-                                                state.type_count, parameters_.weights),
-                                 positions[p], state));
+        level_rating[p * levels + l] =
+            ratingBound(bestTypeSubset(levelSlice(level_bound[p], l, types), utility_max,
+                                       state.type_count, parameters_.weights),
+                        positions[p], state);
     }
   }
-  const std::vector<std::size_t> by_rating = fallingOrder(position_rating);
+  const std::vector<std::size_t> by_rating = fallingOrder(level_rating);
   std::priority_queue<Queued> queue;
-  std::vector<char> queued(count, 0);
   double best_rating = -1.0;
   std::size_t next = 0;
   for (;;) {
-    auto wanted = [&](std::size_t p) {
-      return position_rating[p] > best_rating &&
-             (queue.empty() || position_rating[p] >= queue.top().bound);
+    auto wanted = [&](std::size_t i) {
+      return level_rating[i] > best_rating &&
+             (queue.empty() || level_rating[i] >= queue.top().bound);
     };
     while (next < by_rating.size() && wanted(by_rating[next])) {
-      const std::size_t end = expand(hypotheses, state, by_rating, next, wanted);
-      forEachPosition(end - next, [&](std::size_t i) {
-        boundCandidates(hypotheses, state, by_rating[next + i]);
-      });
-      for (; next < end; ++next) {
-        const std::size_t p = by_rating[next];
-        for (std::size_t k = 0; k < state.candidates[p].size(); ++k)
-          if (state.candidates[p][k].bound >= 0.0)
-            queue.push({state.candidates[p][k].bound, p, k});
-      }
+      batch.clear();
+      for (; next < by_rating.size() && batch.size() < batchSize() && wanted(by_rating[next]);
+           ++next)
+        batch.emplace_back(by_rating[next] / levels, by_rating[next] % levels);
+      const std::vector<std::size_t> at = expand(hypotheses, state, batch);
+      forEachPosition(at.size(), [&](std::size_t i) { boundCandidates(hypotheses, state, at[i]); });
+      for (const auto& [p, l] : batch)
+        for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
+          const Candidate& candidate = state.candidates[p][k];
+          if (orientations_.levelOf(candidate.orientation) == l && candidate.bound >= 0.0)
+            queue.push({candidate.bound, p, candidate.orientation, k});
+        }
     }
     if (queue.empty() || queue.top().bound <= best_rating)
       break;
@@ -561,7 +568,7 @@ NextBestViewPlanner::StepState NextBestViewPlanner::startStep(
   forEachPosition(positions.size(),
                   [&](std::size_t p) { state.nearby[p] = groups.near(positions[p]); });
   state.candidates.resize(positions.size());
-  state.expanded.assign(positions.size(), 0);
+  state.expanded.assign(positions.size() * orientations_.levels().size(), 0);
   state.sight.resize(positions.size() * orientations_.levels().size());
   return state;
 }
@@ -579,20 +586,27 @@ std::size_t NextBestViewPlanner::batchSize() const {
   return pool_ != nullptr ? pool_->threadCount() : 1;
 }
 
-std::size_t NextBestViewPlanner::expand(const HypothesisSet& hypotheses, StepState& state,
-                                        const std::vector<std::size_t>& order, std::size_t next,
-                                        const std::function<bool(std::size_t)>& wanted) const {
-  std::size_t end = next;
-  while (end < order.size() && end - next < batchSize() && wanted(order[end]))
-    ++end;
-  forEachPosition(end - next, [&](std::size_t i) {
-    const std::size_t p = order[next + i];
-    if (!state.expanded[p])
-      utilitiesAt(hypotheses, state.groups, state.nearby[p], state.positions[p], p,
-                  state.candidates[p]);
-    state.expanded[p] = 1;
+std::vector<std::size_t> NextBestViewPlanner::expand(
+    const HypothesisSet& hypotheses, StepState& state,
+    const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const {
+  const std::size_t levels = orientations_.levels().size();
+  std::vector<std::size_t> at;           // the positions, each once
+  std::vector<std::vector<char>> masks;  // their levels to expand
+  for (const auto& [p, l] : wanted) {
+    const std::size_t i = std::find(at.begin(), at.end(), p) - at.begin();
+    if (i == at.size()) {
+      at.push_back(p);
+      masks.emplace_back(levels, 0);
+    }
+    masks[i][l] = !state.expanded[p * levels + l];
+    state.expanded[p * levels + l] = 1;
+  }
+  forEachPosition(at.size(), [&](std::size_t i) {
+    if (std::find(masks[i].begin(), masks[i].end(), 1) != masks[i].end())
+      utilitiesAt(hypotheses, state.groups, state.nearby[at[i]], state.positions[at[i]], at[i],
+                  masks[i], state.candidates[at[i]]);
   });
-  return end;
+  return at;
 }
 
 double NextBestViewPlanner::unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
@@ -737,7 +751,8 @@ PositionBounds NextBestViewPlanner::boundsAt(const HypothesisSet& hypotheses,
     for (std::size_t t = 0; t < types; ++t)
       bounds.position[t] = std::max(bounds.position[t], bounds.level[l][t]);
   }
-  utilitiesAt(hypotheses, groups, state.nearby[0], position, 0, state.candidates[0]);
+  utilitiesAt(hypotheses, groups, state.nearby[0], position, 0,
+              std::vector<char>(orientations_.levels().size(), 1), state.candidates[0]);
   bounds.orientation.assign(orientations_.size(),
                             std::vector<double>(hypotheses.types().size(), 0.0));
   for (const Candidate& candidate : state.candidates[0])

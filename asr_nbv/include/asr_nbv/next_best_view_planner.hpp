@@ -142,11 +142,11 @@ class NextBestViewPlanner {
   /// Positions expanded at a time: a few per thread (more are expanded than needed at the end,
   /// none twice).
   std::size_t batchSize() const;
-  /// The first pass (utilitiesAt) at order[next], order[next + 1], ... while `wanted` holds of
-  /// the position, a batch at a time in parallel; the index after the last one expanded.
-  std::size_t expand(const HypothesisSet& hypotheses, StepState& state,
-                     const std::vector<std::size_t>& order, std::size_t next,
-                     const std::function<bool(std::size_t)>& wanted) const;
+  /// The first pass (utilitiesAt) at each (position, tilt level) of `wanted` not expanded
+  /// yet, in parallel over the positions; the positions, each once.
+  std::vector<std::size_t> expand(
+      const HypothesisSet& hypotheses, StepState& state,
+      const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const;
   /// The candidate's utility without occlusion (computed once): the sum over the members it
   /// sees, >= its exact utility.
   double unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
@@ -167,12 +167,14 @@ class NextBestViewPlanner {
   /// bound with the exact utility cannot beat it.
   void rateCandidate(const HypothesisSet& hypotheses, StepState& state, Candidate& candidate,
                      bool prune, double& best_rating, Step& step) const;
-  /// The first pass at `position`: per candidate orientation that may see something, a bound
+  /// The first pass at `position`, for the tilt levels `wanted`: per candidate orientation that
+  /// may see something, a bound
   /// of its utility per type (each hypothesis adds its terms, by table look-up, to the few
   /// orientations whose axis passes within the side angle of it).
   void utilitiesAt(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                    const std::vector<std::uint32_t>& nearby, const Eigen::Vector2d& position,
-                   std::size_t position_index, std::vector<Candidate>& candidates) const;
+                   std::size_t position_index, const std::vector<char>& wanted,
+                   std::vector<Candidate>& candidates) const;
   /// >= orientationUtility of the member seen from the camera at `offset` from it
   /// (`distance` its length), by table look-up.
   double orientationBound(const HypothesisGroups& groups, std::uint32_t member,
