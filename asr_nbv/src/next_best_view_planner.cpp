@@ -583,7 +583,7 @@ void NextBestViewPlanner::forEachPosition(std::size_t count,
 }
 
 std::size_t NextBestViewPlanner::batchSize() const {
-  return pool_ != nullptr ? pool_->threadCount() : 1;
+  return pool_ != nullptr ? 4 * pool_->threadCount() : 1;
 }
 
 std::vector<std::size_t> NextBestViewPlanner::expand(
