@@ -70,8 +70,9 @@ namespace {
 constexpr double kHeightTolerance = 1e-6;
 
 // Hypotheses are grouped by type in cubes of this edge (HypothesisGroups): whole groups are
-// found near a position, and skipped where none of their members can be seen.
-constexpr double kGroupCell = 0.05;
+// found near a position, and skipped where none of their members can be seen (10 cm: measured
+// 5-20 % faster on the benchmark than 2.5 or 5 cm, as fast as 15 or 25 cm).
+constexpr double kGroupCell = 0.1;
 
 // acos(q) rounded up to the table's resolution (never below it), for the heading windows: a
 // window a little wider than needed only rates a few headings more, which the depth test
