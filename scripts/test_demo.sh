@@ -36,6 +36,8 @@ seconds=$session_seconds
 
 problems=""
 [ "$status" -ne 0 ] && problems="exit code $status after $seconds s; "
+# The demo starts its own master, recorder and nodes: a user's machine must be left as it was.
+[ -n "$session_leftovers" ] && problems+="left running after it ended: $(echo "$session_leftovers" | tr '\n' ';') "
 [ -s "$models" ] || problems+="no models learned into $models; "
 outcome=$(/usr/bin/python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["outcome"])' \
   "$out/result.json" 2>/dev/null)
