@@ -6,7 +6,7 @@
 # seconds since the epoch) for up to TIMEOUT_S seconds, stopping its session when it takes
 # longer; then stops what the run left running in its session. Notes both in LOG. Sets
 # session_status (the run's exit code), session_seconds (its duration) and session_leftovers
-# (what outlived the run, one "pid command" per line; empty if nothing did).
+# (what still runs after the run ended, one "pid command" per line; empty if nothing does).
 await_session() {
   local pid="$1" start="$2" timeout_s="$3" log="$4" label="$5"
   while kill -0 "$pid" 2>/dev/null && [ $(($(date +%s) - start)) -lt "$timeout_s" ]; do
@@ -21,7 +21,7 @@ await_session() {
   wait "$pid"
   session_status=$?
   session_seconds=$(($(date +%s) - start))
-  session_leftovers="$(pgrep -a -s "$pid" || true)"
+  session_leftovers="$(running_in_session "$pid")"
   if [ -n "$session_leftovers" ]; then
     printf '%s: left running after the run ended, stopped:\n%s\n' "$label" "$session_leftovers" >>"$log"
     stop_session "$pid"
@@ -33,8 +33,14 @@ await_session() {
 stop_session() {
   pkill -INT -s "$1" || return 0
   for _ in $(seq 10); do
-    ps -o stat= -s "$1" | grep -qv '^Z' || return 0
+    [ -n "$(running_in_session "$1")" ] || return 0
     sleep 1
   done
   pkill -KILL -s "$1" || true
+}
+
+# The processes of session $1 that still run ("pid command" per line): a zombie (the run itself
+# before it is reaped, a child its parent is about to reap) has ended already.
+running_in_session() {
+  ps -o pid=,stat=,args= -s "$1" | awk '$2 !~ /^Z/ { $2 = ""; print }'
 }
