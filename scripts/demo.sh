@@ -51,6 +51,9 @@ if [ -f "$ROOT/asr_state_machine/launch/search.launch" ]; then
     rosnode list >/dev/null 2>&1 && break
     sleep 0.2
   done
+  # On the search's simulated time (the driver's /clock, which search.launch turns on), so that
+  # the bag replays at the pace the robot moved, not the few seconds the search took.
+  rosparam set /use_sim_time true
   # The search's own topics and the robot's; subscribed before the graph starts, so nothing of
   # the search is missed.
   rosbag record --quiet -O "$OUT/search.bag" /clock /tf /tf_static /joint_states /robot_state \
@@ -80,5 +83,5 @@ for file in result.json search_log.jsonl search.bag search.png; do
   if [ -f "$OUT/$file" ]; then echo "  $file"; fi
 done
 if [ -f "$OUT/search.bag" ]; then
-  echo "Replay (the bag holds the search's /clock): rosparam set use_sim_time true; rosbag play -r 0.1 $OUT/search.bag; rviz -d asr_state_machine/launch/search.rviz"
+  echo "Replay (on the search's simulated time, from its /clock): rosparam set use_sim_time true; rosbag play $OUT/search.bag; rviz -d asr_state_machine/launch/search.rviz"
 fi

@@ -36,6 +36,8 @@ seconds=$session_seconds
 
 problems=""
 [ "$status" -ne 0 ] && problems="exit code $status after $seconds s; "
+# The demo starts its own master, recorder and nodes: a user's machine must be left as it was.
+[ -n "$session_leftovers" ] && problems+="left running after it ended: $(echo "$session_leftovers" | tr '\n' ';') "
 [ -s "$models" ] || problems+="no models learned into $models; "
 outcome=$(/usr/bin/python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["outcome"])' \
   "$out/result.json" 2>/dev/null)
@@ -44,6 +46,14 @@ for file in search_log.jsonl search.bag search.png; do
   [ -s "$out/$file" ] || problems+="no $file; "
 done
 grep -q "^outcome: found_all_objects" "$work/output.txt" || problems+="no summary printed; "
+# The bag is on the search's simulated time: it spans the simulated seconds the result reports.
+bag_span=$(/usr/bin/python3 -c '
+import json, sys, rosbag
+bag = rosbag.Bag(sys.argv[1])
+span = bag.get_end_time() - bag.get_start_time()
+print("ok" if abs(span - json.load(open(sys.argv[2]))["sim_seconds"]) < 1.0 else "%.1f s" % span)
+' "$out/search.bag" "$out/result.json" 2>&1 | tail -n 1)
+[ "$bag_span" = "ok" ] || problems+="the bag does not span the search's simulated time ($bag_span); "
 if [ -n "$problems" ]; then
   tail -n 40 "$work/output.txt"
   write_result failed "$problems"

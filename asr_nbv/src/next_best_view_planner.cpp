@@ -15,16 +15,29 @@ namespace asr_nbv {
 
 using asr_robot_model::RobotState;
 
+// A member a camera sees, occlusion aside: its slot among the position's nearby members (for
+// the lines of sight cast from there), its index in the set and its utility.
+struct NextBestViewPlanner::SeenMember {
+  std::size_t index;
+  std::size_t slot;
+  double utility;
+  bool operator<(const SeenMember& other) const { return index < other.index; }
+};
+
 // A view with something to see: where, which way, and its utility per type (sparse) by the
-// first pass's bounds; the exact utility and the rating's bound once computed.
+// first pass's bounds; the members it sees and their sum without occlusion (a tighter bound),
+// the exact utility and the rating's bound once computed.
 struct NextBestViewPlanner::Candidate {
   std::size_t position = 0;
   std::size_t orientation = 0;
   std::vector<std::pair<int, double>> per_type;
   double total = 0.0;
-  std::vector<double> exact;  // per type, occlusion included
-  double exact_total = -1.0;  // < 0: not computed yet
-  double bound = -1.0;        // of the rating; < 0: never chosen
+  std::vector<SeenMember> seen;    // in index order
+  std::vector<double> unoccluded;  // per type
+  double unoccluded_total = -1.0;  // < 0: not computed yet
+  std::vector<double> exact;       // per type, occlusion included
+  double exact_total = -1.0;       // < 0: not computed yet
+  double bound = -1.0;             // of the rating; < 0: never chosen
 };
 
 struct NextBestViewPlanner::Step {
@@ -32,41 +45,17 @@ struct NextBestViewPlanner::Step {
   PlannedView view;
 };
 
-// What the first pass reads of each hypothesis, in flat arrays: its position, type and active
-// normals (normals_begin[i] .. normals_begin[i + 1]; none: recognisable from every side).
-struct NextBestViewPlanner::PackedHypotheses {
-  explicit PackedHypotheses(const HypothesisSet& hypotheses) {
-    const auto& all = hypotheses.hypotheses();
-    points.reserve(all.size());
-    types.reserve(all.size());
-    normals_begin.reserve(all.size() + 1);
-    for (const Hypothesis& hypothesis : all) {
-      points.push_back(hypothesis.box.pose.position);
-      types.push_back(hypothesis.type);
-      normals_begin.push_back(static_cast<std::uint32_t>(normals.size()));
-      for (std::size_t n = 0; n < hypothesis.normals.size(); ++n)
-        if (hypothesis.active[n])
-          normals.push_back(hypothesis.normals[n]);
-    }
-    normals_begin.push_back(static_cast<std::uint32_t>(normals.size()));
-  }
-  std::vector<Eigen::Vector3d> points;
-  std::vector<int> types;
-  std::vector<std::uint32_t> normals_begin;
-  std::vector<Eigen::Vector3d> normals;
-};
-
 // What the candidates of one step share while they are rated.
 struct NextBestViewPlanner::StepState {
-  StepState(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& at,
+  StepState(const HypothesisGroups& grouped, const std::vector<Eigen::Vector2d>& at,
             const RobotState& from)
-      : positions(at), current(from), packed(hypotheses) {}
+      : positions(at), current(from), groups(grouped) {}
   const std::vector<Eigen::Vector2d>& positions;
   const RobotState& current;
-  PackedHypotheses packed;
-  std::vector<std::vector<std::size_t>> nearby;
+  const HypothesisGroups& groups;
+  std::vector<std::vector<std::uint32_t>> nearby;  // groups
   std::vector<std::vector<Candidate>> candidates;  // per position, once expanded
-  std::vector<char> expanded;
+  std::vector<char> expanded;                      // per position and tilt level
   // Lines of sight from a camera position (lattice point and tilt level's height) to its
   // nearby hypotheses, cast once for all the orientations rated there.
   std::vector<std::vector<signed char>> sight;
@@ -80,92 +69,10 @@ namespace {
 // Camera heights differ by tilt; IK must accept the heights this planner computes itself.
 constexpr double kHeightTolerance = 1e-6;
 
-// Counting hypotheses bucketed by floor cells a quarter of the far plane's reach wide, so the
-// ones a position can see are found in the cells around it; whole cells within reach are taken
-// without a distance test.
-class HypothesisGrid {
- public:
-  HypothesisGrid(const HypothesisSet& hypotheses, double reach)
-      : cell_(reach / kCellsPerReach), count_(hypotheses.hypotheses().size()) {
-    const auto& all = hypotheses.hypotheses();
-    Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::max());
-    Eigen::Vector2d high = -low;
-    for (const Hypothesis& hypothesis : all) {
-      if (!hypothesis.counts())
-        continue;
-      low = low.cwiseMin(hypothesis.box.pose.position.head<2>());
-      high = high.cwiseMax(hypothesis.box.pose.position.head<2>());
-    }
-    if (low.x() > high.x())
-      return;
-    low_ = low;
-    columns_ = static_cast<long>(std::floor((high.x() - low.x()) / cell_)) + 1;
-    rows_ = static_cast<long>(std::floor((high.y() - low.y()) / cell_)) + 1;
-    cells_.resize(static_cast<std::size_t>(columns_ * rows_));
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      if (all[i].counts()) {
-        const auto [column, row] = cellOf(all[i].box.pose.position.head<2>());
-        cells_[static_cast<std::size_t>(row * columns_ + column)].push_back(i);
-      }
-    }
-  }
-
-  // Counting hypotheses within `reach` of `point` on the floor, in index order.
-  std::vector<std::size_t> near(const HypothesisSet& hypotheses, const Eigen::Vector2d& point,
-                                double reach) const {
-    std::vector<std::size_t> found;
-    if (cells_.empty())
-      return found;
-    // Marks instead of a sort: the order of the indices is kept without sorting thousands.
-    thread_local std::vector<char> marked;
-    marked.assign(count_, 0);
-    std::size_t first = count_, last = 0, hits = 0;
-    auto mark = [&](std::size_t i) {
-      marked[i] = 1;
-      first = std::min(first, i);
-      last = std::max(last, i);
-      ++hits;
-    };
-    const auto [low_column, low_row] = cellOf(point - Eigen::Vector2d::Constant(reach));
-    const auto [high_column, high_row] = cellOf(point + Eigen::Vector2d::Constant(reach));
-    for (long row = std::max(0L, low_row); row <= std::min(rows_ - 1, high_row); ++row) {
-      for (long column = std::max(0L, low_column); column <= std::min(columns_ - 1, high_column);
-           ++column) {
-        const std::vector<std::size_t>& cell =
-            cells_[static_cast<std::size_t>(row * columns_ + column)];
-        if (cell.empty())
-          continue;
-        const Eigen::Vector2d corner = low_ + cell_ * Eigen::Vector2d(column, row);
-        // The cell's farthest point from `point`: within reach, so is all of it.
-        const Eigen::Vector2d far_corner(
-            std::max(std::abs(corner.x() - point.x()), std::abs(corner.x() + cell_ - point.x())),
-            std::max(std::abs(corner.y() - point.y()), std::abs(corner.y() + cell_ - point.y())));
-        const bool inside = far_corner.norm() < reach * (1.0 - 1e-9);
-        for (std::size_t i : cell)
-          if (inside ||
-              (hypotheses.hypotheses()[i].box.pose.position.head<2>() - point).norm() <= reach)
-            mark(i);
-      }
-    }
-    found.reserve(hits);
-    for (std::size_t i = first; hits > 0 && i <= last; ++i)
-      if (marked[i])
-        found.push_back(i);
-    return found;
-  }
-
- private:
-  static constexpr double kCellsPerReach = 4.0;
-  std::pair<long, long> cellOf(const Eigen::Vector2d& point) const {
-    return {static_cast<long>(std::floor((point.x() - low_.x()) / cell_)),
-            static_cast<long>(std::floor((point.y() - low_.y()) / cell_))};
-  }
-  double cell_;
-  std::size_t count_;
-  Eigen::Vector2d low_ = Eigen::Vector2d::Zero();
-  long columns_ = 0, rows_ = 0;
-  std::vector<std::vector<std::size_t>> cells_;
-};
+// Hypotheses are grouped by type in cubes of this edge (HypothesisGroups): whole groups are
+// found near a position, and skipped where none of their members can be seen (10 cm: measured
+// 5-20 % faster on the benchmark than 2.5 or 5 cm, as fast as 15 or 25 cm).
+constexpr double kGroupCell = 0.1;
 
 // acos(q) rounded up to the table's resolution (never below it), for the heading windows: a
 // window a little wider than needed only rates a few headings more, which the depth test
@@ -231,7 +138,13 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
       proximity_bound_((parameters_.frustum.far() - parameters_.frustum.near()) / 2.0),
       search_(search) {
   checkNbvParameters(parameters_);
-  const double side_angle = std::min(parameters_.frustum.fovx(), parameters_.frustum.fovy()) / 2.0;
+  const asr_robot_model::Frustum& frustum = parameters_.frustum;
+  const double side_angle = std::min(frustum.fovx(), frustum.fovy()) / 2.0;
+  side_angle_ = side_angle;
+  side_cosine_ = std::cos(side_angle);
+  side_sine_ = std::sin(side_angle);
+  reach_ = frustum.far() / side_cosine_;
+  middle_ = (frustum.near() + frustum.far()) / 2.0;
   for (const TiltLevel& level : orientations_.levels()) {
     band_low_.push_back(std::tan(std::max(level.elevation - side_angle, -M_PI / 2 + 1e-6)));
     band_high_.push_back(std::tan(std::min(level.elevation + side_angle, M_PI / 2 - 1e-6)));
@@ -248,79 +161,109 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
   camera_reach_ += 0.01;  // the pan samples' margin
 }
 
-double NextBestViewPlanner::orientationBound(const PackedHypotheses& packed, std::size_t index,
+double NextBestViewPlanner::orientationBound(const HypothesisGroups& groups, std::uint32_t member,
                                              const Eigen::Vector3d& offset, double distance) const {
-  const std::uint32_t begin = packed.normals_begin[index], end = packed.normals_begin[index + 1];
+  const std::uint32_t begin = groups.normalsBegin(member), end = groups.normalsBegin(member + 1);
   if (begin == end)
-    return 1.0;  // recognisable from every side (only counting hypotheses are rated)
+    return 1.0;  // recognisable from every side (only counting hypotheses are grouped)
   // The camera is at -offset from the hypothesis.
   const Eigen::Vector3d to_camera = -offset / distance;
   double best = 0.0;
   for (std::uint32_t n = begin; n < end; ++n)
-    best = std::max(best, orientation_bound_.ofCosine(packed.normals[n].dot(to_camera)));
+    best = std::max(best, orientation_bound_.ofCosine(groups.normal(n).dot(to_camera)));
   return best;
 }
 
+bool NextBestViewPlanner::groupLevels(const HypothesisGroups::Group& group,
+                                      const Eigen::Vector2d& position,
+                                      std::vector<char>& passing) const {
+  const std::vector<TiltLevel>& levels = orientations_.levels();
+  const double r = group.radius;
+  const double horizontal = (group.centre.head<2>() - position).norm();
+  // The members' rises and horizontal distances are within r of the centre's: each level's
+  // slope band (see utilitiesAt) widened by that, and the clipping range's reach.
+  const double near_run = std::max(0.0, horizontal - r), far_run = horizontal + r;
+  const double closest = std::max(0.0, parameters_.frustum.near() - r), farthest = reach_ + r;
+  bool any = false;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const double rise = group.centre.z() - levels[l].camera_height;
+    const double low = band_low_[l], high = band_high_[l];
+    const double squared = horizontal * horizontal + rise * rise;
+    passing[l] = rise + r > (low >= 0.0 ? near_run * low : far_run * low) &&
+                 rise - r < (high >= 0.0 ? far_run * high : near_run * high) &&
+                 (closest == 0.0 || squared > closest * closest) && squared < farthest * farthest;
+    any = any || passing[l];
+  }
+  return any;
+}
+
 void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
-                                      const PackedHypotheses& packed,
-                                      const std::vector<std::size_t>& nearby,
+                                      const HypothesisGroups& groups,
+                                      const std::vector<std::uint32_t>& nearby,
                                       const Eigen::Vector2d& position, std::size_t position_index,
+                                      const std::vector<char>& wanted,
                                       std::vector<Candidate>& candidates) const {
-  const asr_robot_model::Frustum& frustum = parameters_.frustum;
-  const double side_angle = std::min(frustum.fovx(), frustum.fovy()) / 2.0;
-  const double side_cosine = std::cos(side_angle);
-  const double reach = frustum.far() / side_cosine;
-  const double middle = (frustum.near() + frustum.far()) / 2.0;
+  const double near = parameters_.frustum.near();
   const std::size_t type_count = hypotheses.types().size();
   const std::vector<TiltLevel>& levels = orientations_.levels();
   thread_local std::vector<double> utility;  // orientation x type
   thread_local std::vector<char> touched;
+  std::vector<char> passing(levels.size());
   utility.assign(orientations_.size() * type_count, 0.0);
   touched.assign(orientations_.size(), 0);
-  for (std::size_t index : nearby) {
-    const Eigen::Vector3d& point = packed.points[index];
-    const Eigen::Vector2d across = point.head<2>() - position;
-    const double horizontal = across.norm();
-    double azimuth = std::numeric_limits<double>::quiet_NaN();  // when a level needs it
-    for (std::size_t l = 0; l < levels.size(); ++l) {
-      const TiltLevel& level = levels[l];
-      // Only levels whose axis elevation lies within the side angle of the hypothesis' can see
-      // it: a slope test, no arc function.
-      const double rise = point.z() - level.camera_height;
-      if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
-        continue;
-      const Eigen::Vector3d camera(position.x(), position.y(), level.camera_height);
-      const Eigen::Vector3d offset = point - camera;
-      const double distance = offset.norm();
-      if (distance <= frustum.near() || distance >= reach)
-        continue;
-      const double orientation = orientationBound(packed, index, offset, distance);
-      if (orientation == 0.0)
-        continue;
-      if (std::isnan(azimuth))
-        azimuth = std::atan2(across.y(), across.x());
-      const double inverse_distance = 1.0 / distance;
-      const auto [first, count] =
-          headingWindow(level, level_sine_[l], level_cosine_[l], rise * inverse_distance,
-                        horizontal * inverse_distance, azimuth, side_cosine);
-      const long headings = static_cast<long>(level.headings);
-      long h = first;  // within a few turns of the circle: no division needed
-      while (h < 0)
-        h += headings;
-      while (h >= headings)
-        h -= headings;
-      double* const row = utility.data() + packed.types[index];
-      for (long k = 0; k < count; ++k, h = (h + 1 == headings) ? 0 : h + 1) {
-        const std::size_t o = level.first_orientation + static_cast<std::size_t>(h);
-        // Bounds of sideProximity's terms, as the orientation's above.
-        const double depth = orientations_.axis(o).dot(offset);
-        if (depth <= side_cosine * distance)
+  for (std::uint32_t g : nearby) {
+    const HypothesisGroups::Group& group = groups.groups()[g];
+    // Levels none of the group's members can be seen from are skipped for all of them.
+    if (!groupLevels(group, position, passing))
+      continue;
+    for (std::size_t l = 0; l < levels.size(); ++l)
+      passing[l] = passing[l] && wanted[l];
+    double* const row = utility.data() + group.type;
+    for (std::uint32_t m = group.begin; m < group.end; ++m) {
+      const Eigen::Vector3d& point = groups.point(m);
+      const Eigen::Vector2d across = point.head<2>() - position;
+      const double horizontal = across.norm();
+      double azimuth = std::numeric_limits<double>::quiet_NaN();  // when a level needs it
+      for (std::size_t l = 0; l < levels.size(); ++l) {
+        if (!passing[l])
           continue;
-        const double terms = proximity_bound_.ofDistance(std::abs(depth - middle)) *
-                             side_bound_.ofCosine(depth * inverse_distance);
-        if (terms > 0.0) {
-          row[o * type_count] += orientation * terms;
-          touched[o] = 1;
+        const TiltLevel& level = levels[l];
+        // Only levels whose axis elevation lies within the side angle of the hypothesis' can
+        // see it: a slope test, no arc function.
+        const double rise = point.z() - level.camera_height;
+        if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
+          continue;
+        const Eigen::Vector3d offset(across.x(), across.y(), rise);
+        const double distance = offset.norm();
+        if (distance <= near || distance >= reach_)
+          continue;
+        const double orientation = orientationBound(groups, m, offset, distance);
+        if (orientation == 0.0)
+          continue;
+        if (std::isnan(azimuth))
+          azimuth = std::atan2(across.y(), across.x());
+        const double inverse_distance = 1.0 / distance;
+        const auto [first, count] =
+            headingWindow(level, level_sine_[l], level_cosine_[l], rise * inverse_distance,
+                          horizontal * inverse_distance, azimuth, side_cosine_);
+        const long headings = static_cast<long>(level.headings);
+        long h = first;  // within a few turns of the circle: no division needed
+        while (h < 0)
+          h += headings;
+        while (h >= headings)
+          h -= headings;
+        for (long k = 0; k < count; ++k, h = (h + 1 == headings) ? 0 : h + 1) {
+          const std::size_t o = level.first_orientation + static_cast<std::size_t>(h);
+          // Bounds of sideProximity's terms, as the orientation's above.
+          const double depth = orientations_.axis(o).dot(offset);
+          if (depth <= side_cosine_ * distance)
+            continue;
+          const double terms = proximity_bound_.ofDistance(std::abs(depth - middle_)) *
+                               side_bound_.ofCosine(depth * inverse_distance);
+          if (terms > 0.0) {
+            row[o * type_count] += orientation * terms;
+            touched[o] = 1;
+          }
         }
       }
     }
@@ -352,75 +295,104 @@ asr_common::Pose NextBestViewPlanner::cameraOf(
   return camera;
 }
 
-std::vector<double> NextBestViewPlanner::occludedUtility(const HypothesisSet& hypotheses,
-                                                         const std::vector<std::size_t>& nearby,
-                                                         const asr_common::Pose& camera,
-                                                         std::vector<signed char>& sight) const {
-  std::vector<double> per_type(hypotheses.types().size(), 0.0);
-  if (sight.empty())
-    sight.assign(nearby.size(), -1);
-  for (std::size_t k = 0; k < nearby.size(); ++k) {
-    const Hypothesis& hypothesis = hypotheses.hypotheses()[nearby[k]];
-    const double u = hypothesisUtility(camera, hypothesis, parameters_);
-    if (u <= 0.0)
+void NextBestViewPlanner::visibleMembers(const HypothesisSet& hypotheses,
+                                         const HypothesisGroups& groups,
+                                         const std::vector<std::uint32_t>& nearby,
+                                         const asr_common::Pose& camera,
+                                         std::vector<SeenMember>& seen) const {
+  const Eigen::Vector3d axis = camera.orientation * Eigen::Vector3d::UnitZ();
+  const asr_robot_model::Frustum& frustum = parameters_.frustum;
+  seen.clear();
+  std::size_t slot = 0;  // of the group's first member among the nearby groups' members
+  for (std::uint32_t g : nearby) {
+    const HypothesisGroups::Group& group = groups.groups()[g];
+    const std::size_t first_slot = slot;
+    slot += group.end - group.begin;
+    // A group whose members all lie outside the side angle or the clipping range is skipped.
+    const Eigen::Vector3d offset = group.centre - camera.position;
+    const double depth = axis.dot(offset), distance = offset.norm();
+    const double r = group.radius;
+    if (depth + r <= frustum.near() || depth - r >= frustum.far())
       continue;
-    if (sight[k] < 0)
-      sight[k] = map_.lineOfSight(camera.position, hypothesis.box) ? 1 : 0;
-    if (sight[k] == 1)
-      per_type[hypothesis.type] += u;
+    if (distance > r) {
+      const double x = r / distance;
+      if (depth <
+          distance * (side_cosine_ * std::sqrt(1.0 - x * x) - side_sine_ * x) - 1e-9 * distance)
+        continue;
+    }
+    for (std::uint32_t m = group.begin; m < group.end; ++m) {
+      const std::size_t index = groups.memberIndex(m);
+      const double u = hypothesisUtility(camera, hypotheses.hypotheses()[index], parameters_);
+      if (u > 0.0)
+        seen.push_back({index, first_slot + (m - group.begin), u});
+    }
   }
-  return per_type;
+  // Summed in index order, as without groups.
+  std::sort(seen.begin(), seen.end());
 }
 
 void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
-                                        const PackedHypotheses& packed,
-                                        const std::vector<std::size_t>& nearby,
+                                        const HypothesisGroups& groups,
+                                        const std::vector<std::uint32_t>& nearby,
                                         const Eigen::Vector2d& position,
-                                        std::vector<double>& per_type) const {
+                                        std::vector<double>& per_level_type) const {
   // Covers the rounding of the sums (the tables' margins cover that of the terms).
   constexpr double kMargin = 1.0 + 1e-6;
   // Covers the rounding of the cosine of the elevation difference.
   constexpr double kCosineMargin = 1e-9;
-  constexpr double kOrientationAtMost = 1.0 + 1e-6;
-  const asr_robot_model::Frustum& frustum = parameters_.frustum;
-  const double side_cosine = std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
-  const double reach = frustum.far() / side_cosine;
-  const double middle = (frustum.near() + frustum.far()) / 2.0;
+  const double near = parameters_.frustum.near();
+  const std::size_t type_count = hypotheses.types().size();
   const std::vector<TiltLevel>& levels = orientations_.levels();
-  per_type.assign(hypotheses.types().size(), 0.0);
-  for (std::size_t index : nearby) {
-    const Eigen::Vector3d& point = packed.points[index];
-    const double horizontal = (point.head<2>() - position).norm();
-    double best = 0.0;
-    for (std::size_t l = 0; l < levels.size(); ++l) {
-      // As in utilitiesAt: the levels that can see the hypothesis at all.
-      const double rise = point.z() - levels[l].camera_height;
-      if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
-        continue;
-      const Eigen::Vector3d offset =
-          point - Eigen::Vector3d(position.x(), position.y(), levels[l].camera_height);
-      const double distance = offset.norm();
-      if (distance <= frustum.near() || distance >= reach)
-        continue;
-      // Every axis of the level is at least the elevation difference away from the
-      // hypothesis, whatever its heading: that bounds the side term, and the depth
-      // (distance x the cosine of that angle) from above.
-      const double cosine = std::min(
-          1.0, (level_cosine_[l] * horizontal + level_sine_[l] * rise) / distance + kCosineMargin);
-      const double low = side_cosine * distance, high = cosine * distance;
-      const double gap = middle < low ? low - middle : std::max(0.0, middle - high);
-      const double terms =
-          side_bound_.ofCosine(cosine) * proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9));
-      // The orientation bound is at most 1 plus its table's margin: skipped where it cannot
-      // raise the best.
-      if (terms * kOrientationAtMost > best)
-        best = std::max(best, orientationBound(packed, index, offset, distance) * terms);
+  std::vector<char> passing(levels.size());
+  per_level_type.assign(levels.size() * type_count, 0.0);
+  for (std::uint32_t g : nearby) {
+    const HypothesisGroups::Group& group = groups.groups()[g];
+    if (!groupLevels(group, position, passing))
+      continue;
+    for (std::uint32_t m = group.begin; m < group.end; ++m) {
+      const Eigen::Vector3d& point = groups.point(m);
+      const double horizontal = (point.head<2>() - position).norm();
+      for (std::size_t l = 0; l < levels.size(); ++l) {
+        if (!passing[l])
+          continue;
+        // As in utilitiesAt: the levels that can see the hypothesis at all.
+        const double rise = point.z() - levels[l].camera_height;
+        if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
+          continue;
+        const Eigen::Vector3d offset =
+            point - Eigen::Vector3d(position.x(), position.y(), levels[l].camera_height);
+        const double distance = offset.norm();
+        if (distance <= near || distance >= reach_)
+          continue;
+        // Every axis of the level is at least the elevation difference away from the
+        // hypothesis, whatever its heading: that bounds the side term, and the depth
+        // (distance x the cosine of that angle) from above.
+        const double cosine =
+            std::min(1.0, (level_cosine_[l] * horizontal + level_sine_[l] * rise) / distance +
+                              kCosineMargin);
+        const double low = side_cosine_ * distance, high = cosine * distance;
+        const double gap = middle_ < low ? low - middle_ : std::max(0.0, middle_ - high);
+        const double terms =
+            side_bound_.ofCosine(cosine) * proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9));
+        if (terms > 0.0)
+          per_level_type[l * type_count + group.type] +=
+              kMargin * orientationBound(groups, m, offset, distance) * terms;
+      }
     }
-    per_type[packed.types[index]] += kMargin * best;
   }
 }
 
 namespace {
+
+// Level l's bounds per type in a level x type table.
+std::vector<double> levelSlice(const std::vector<double>& table, std::size_t l, std::size_t types) {
+  return {table.begin() + static_cast<long>(l * types),
+          table.begin() + static_cast<long>((l + 1) * types)};
+}
+double levelTotal(const std::vector<double>& table, std::size_t l, std::size_t types) {
+  return std::accumulate(table.begin() + static_cast<long>(l * types),
+                         table.begin() + static_cast<long>((l + 1) * types), 0.0);
+}
 
 // Indices of `values` >= 0 in falling order of value, ties in index order.
 std::vector<std::size_t> fallingOrder(const std::vector<double>& values) {
@@ -435,47 +407,82 @@ std::vector<std::size_t> fallingOrder(const std::vector<double>& values) {
 
 // A candidate waiting to be rated, in the order of the exhaustive search over bounds: falling
 // bound, then position, then its index at the position.
+// `key`: the candidate's orientation, or kLevelKey + l for a tilt level not yet expanded (so
+// the order does not depend on the order candidates were found in); `index`: the candidate's
+// among its position's.
+constexpr std::size_t kLevelKey = std::numeric_limits<std::size_t>::max() / 2;
 struct Queued {
   double bound;
-  std::size_t position, index;
+  std::size_t position, key, index;
   bool operator<(const Queued& other) const {  // "rated after" for std::priority_queue
     if (bound != other.bound)
       return bound < other.bound;
-    return std::tie(position, index) > std::tie(other.position, other.index);
+    return std::tie(position, key) > std::tie(other.position, other.key);
   }
+  bool isLevel() const { return key >= kLevelKey; }
 };
 
 }  // namespace
 
 NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
-    const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
-    const RobotState& current) const {
+    const HypothesisSet& hypotheses, const HypothesisGroups& groups,
+    const std::vector<Eigen::Vector2d>& positions, const RobotState& current) const {
   if (search_ == CandidateSearch::exhaustive)
-    return rateStepExhaustively(hypotheses, positions, current);
-  StepState state = startStep(hypotheses, positions, current);
+    return rateStepExhaustively(hypotheses, groups, positions, current);
+  StepState state = startStep(hypotheses, groups, positions, current);
   // Branch and bound over the positions: a bound per position and type first (cheap, one term
   // per hypothesis), then the first pass (every orientation) only where the bound can still win.
   const std::size_t count = positions.size();
-  std::vector<std::vector<double>> type_bound(count);
-  std::vector<double> total_bound(count, -1.0);
+  const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
+  std::vector<std::vector<double>> level_bound(count);  // level x type
+  std::vector<double> total_bound(count, -1.0);         // the largest level's
   forEachPosition(count, [&](std::size_t p) {
     if (state.nearby[p].empty())
       return;
-    positionBound(hypotheses, state.packed, state.nearby[p], positions[p], type_bound[p]);
-    total_bound[p] = std::accumulate(type_bound[p].begin(), type_bound[p].end(), 0.0);
+    positionBound(hypotheses, groups, state.nearby[p], positions[p], level_bound[p]);
+    for (std::size_t l = 0; l < levels; ++l)
+      total_bound[p] = std::max(total_bound[p], levelTotal(level_bound[p], l, types));
   });
 
   // The normaliser: the largest exact utility. Occlusion only lowers utilities, so the first
-  // pass bounds them: lines of sight are cast only where the bound exceeds the best so far.
-  const std::vector<std::size_t> by_utility = fallingOrder(total_bound);
+  // pass bounds them: best first, positions (by their bound, expanded a batch at a time) and
+  // their candidates (by the first pass's) from one queue, until no bound exceeds the largest
+  // exact utility found; lines of sight are cast only for the candidates taken from it.
   double& utility_max = state.utility_max;
-  auto may_exceed = [&](std::size_t p) { return total_bound[p] > utility_max; };
-  for (std::size_t next = 0; next < by_utility.size() && may_exceed(by_utility[next]);) {
-    const std::size_t end = expand(hypotheses, state, by_utility, next, may_exceed);
-    for (; next < end; ++next)
-      for (Candidate& candidate : state.candidates[by_utility[next]])
-        if (candidate.total > utility_max)
-          utility_max = std::max(utility_max, exactUtility(hypotheses, state, candidate));
+  std::priority_queue<Queued> best_first;
+  for (std::size_t p = 0; p < count; ++p)
+    for (std::size_t l = 0; p < count && !state.nearby[p].empty() && l < levels; ++l)
+      if (const double total = levelTotal(level_bound[p], l, types); total > 0.0)
+        best_first.push({total, p, kLevelKey + l, 0});
+  std::vector<std::pair<std::size_t, std::size_t>> batch;
+  while (!best_first.empty() && best_first.top().bound > utility_max) {
+    if (!best_first.top().isLevel()) {
+      // A candidate: first by its utility without occlusion (no line of sight cast), then,
+      // if that still exceeds the best, exactly.
+      const Queued top = best_first.top();
+      best_first.pop();
+      Candidate& candidate = state.candidates[top.position][top.index];
+      if (candidate.unoccluded_total < 0.0) {
+        if (unoccludedUtility(hypotheses, state, candidate) > utility_max)
+          best_first.push({candidate.unoccluded_total, top.position, top.key, top.index});
+        continue;
+      }
+      utility_max = std::max(utility_max, exactUtility(hypotheses, state, candidate));
+      continue;
+    }
+    batch.clear();
+    while (batch.size() < batchSize() && !best_first.empty() && best_first.top().isLevel() &&
+           best_first.top().bound > utility_max) {
+      batch.emplace_back(best_first.top().position, best_first.top().key - kLevelKey);
+      best_first.pop();
+    }
+    expand(hypotheses, state, batch);
+    for (const auto& [p, l] : batch)
+      for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
+        const Candidate& candidate = state.candidates[p][k];
+        if (orientations_.levelOf(candidate.orientation) == l && candidate.total > utility_max)
+          best_first.push({candidate.total, p, candidate.orientation, k});
+      }
   }
   Step step;
   if (utility_max <= 0.0)
@@ -485,34 +492,39 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   // The rating: candidates in falling order of their bound (motion free, no occlusion) until
   // none can beat the best; a position's bound (its types' bounds) is at least its candidates',
   // so a position is expanded only once its bound reaches the best candidate waiting.
-  std::vector<double> position_rating(count, -1.0);
-  for (std::size_t p = 0; p < count; ++p)
-    if (total_bound[p] > 0.0 &&
-        !(state.worth_moving && total_bound[p] <= parameters_.min_utility_for_moving))
-      position_rating[p] = ratingBound(
-          bestTypeSubset(type_bound[p], utility_max, state.type_count, parameters_.weights),
-          positions[p], state);
-  const std::vector<std::size_t> by_rating = fallingOrder(position_rating);
+  std::vector<double> level_rating(count * levels, -1.0);  // position x level
+  for (std::size_t p = 0; p < count; ++p) {
+    for (std::size_t l = 0; l < levels && !state.nearby[p].empty(); ++l) {
+      const double total = levelTotal(level_bound[p], l, types);
+      if (total > 0.0 && !(state.worth_moving && total <= parameters_.min_utility_for_moving))
+        level_rating[p * levels + l] =
+            ratingBound(bestTypeSubset(levelSlice(level_bound[p], l, types), utility_max,
+                                       state.type_count, parameters_.weights),
+                        positions[p], state);
+    }
+  }
+  const std::vector<std::size_t> by_rating = fallingOrder(level_rating);
   std::priority_queue<Queued> queue;
-  std::vector<char> queued(count, 0);
   double best_rating = -1.0;
   std::size_t next = 0;
   for (;;) {
-    auto wanted = [&](std::size_t p) {
-      return position_rating[p] > best_rating &&
-             (queue.empty() || position_rating[p] >= queue.top().bound);
+    auto wanted = [&](std::size_t i) {
+      return level_rating[i] > best_rating &&
+             (queue.empty() || level_rating[i] >= queue.top().bound);
     };
     while (next < by_rating.size() && wanted(by_rating[next])) {
-      const std::size_t end = expand(hypotheses, state, by_rating, next, wanted);
-      forEachPosition(end - next, [&](std::size_t i) {
-        boundCandidates(hypotheses, state, by_rating[next + i]);
-      });
-      for (; next < end; ++next) {
-        const std::size_t p = by_rating[next];
-        for (std::size_t k = 0; k < state.candidates[p].size(); ++k)
-          if (state.candidates[p][k].bound >= 0.0)
-            queue.push({state.candidates[p][k].bound, p, k});
-      }
+      batch.clear();
+      for (; next < by_rating.size() && batch.size() < batchSize() && wanted(by_rating[next]);
+           ++next)
+        batch.emplace_back(by_rating[next] / levels, by_rating[next] % levels);
+      const std::vector<std::size_t> at = expand(hypotheses, state, batch);
+      forEachPosition(at.size(), [&](std::size_t i) { boundCandidates(hypotheses, state, at[i]); });
+      for (const auto& [p, l] : batch)
+        for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
+          const Candidate& candidate = state.candidates[p][k];
+          if (orientations_.levelOf(candidate.orientation) == l && candidate.bound >= 0.0)
+            queue.push({candidate.bound, p, candidate.orientation, k});
+        }
     }
     if (queue.empty() || queue.top().bound <= best_rating)
       break;
@@ -525,9 +537,9 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
 }
 
 NextBestViewPlanner::Step NextBestViewPlanner::rateStepExhaustively(
-    const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
-    const RobotState& current) const {
-  StepState state = startStep(hypotheses, positions, current);
+    const HypothesisSet& hypotheses, const HypothesisGroups& groups,
+    const std::vector<Eigen::Vector2d>& positions, const RobotState& current) const {
+  StepState state = startStep(hypotheses, groups, positions, current);
   for (std::size_t p = 0; p < positions.size(); ++p) {
     for (std::size_t o = 0; o < orientations_.size(); ++o) {
       Candidate candidate;
@@ -549,19 +561,15 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStepExhaustively(
 }
 
 NextBestViewPlanner::StepState NextBestViewPlanner::startStep(
-    const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
-    const RobotState& current) const {
-  const asr_robot_model::Frustum& frustum = parameters_.frustum;
-  const double reach = frustum.far() / std::cos(std::min(frustum.fovx(), frustum.fovy()) / 2.0);
-  const HypothesisGrid grid(hypotheses, reach);
-  StepState state(hypotheses, positions, current);
+    const HypothesisSet& hypotheses, const HypothesisGroups& groups,
+    const std::vector<Eigen::Vector2d>& positions, const RobotState& current) const {
+  StepState state(groups, positions, current);
   state.type_count = hypotheses.countingTypes();
   state.nearby.resize(positions.size());
-  forEachPosition(positions.size(), [&](std::size_t p) {
-    state.nearby[p] = grid.near(hypotheses, positions[p], reach);
-  });
+  forEachPosition(positions.size(),
+                  [&](std::size_t p) { state.nearby[p] = groups.near(positions[p]); });
   state.candidates.resize(positions.size());
-  state.expanded.assign(positions.size(), 0);
+  state.expanded.assign(positions.size() * orientations_.levels().size(), 0);
   state.sight.resize(positions.size() * orientations_.levels().size());
   return state;
 }
@@ -575,31 +583,71 @@ void NextBestViewPlanner::forEachPosition(std::size_t count,
       task(i);
 }
 
-std::size_t NextBestViewPlanner::expand(const HypothesisSet& hypotheses, StepState& state,
-                                        const std::vector<std::size_t>& order, std::size_t next,
-                                        const std::function<bool(std::size_t)>& wanted) const {
-  // A few positions per thread at a time: more are rated than needed at the end, none twice.
-  const std::size_t batch = pool_ != nullptr ? 8 * pool_->threadCount() : 1;
-  std::size_t end = next;
-  while (end < order.size() && end - next < batch && wanted(order[end]))
-    ++end;
-  forEachPosition(end - next, [&](std::size_t i) {
-    const std::size_t p = order[next + i];
-    if (!state.expanded[p])
-      utilitiesAt(hypotheses, state.packed, state.nearby[p], state.positions[p], p,
-                  state.candidates[p]);
-    state.expanded[p] = 1;
+std::size_t NextBestViewPlanner::batchSize() const {
+  return pool_ != nullptr ? 4 * pool_->threadCount() : 1;
+}
+
+std::vector<std::size_t> NextBestViewPlanner::expand(
+    const HypothesisSet& hypotheses, StepState& state,
+    const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const {
+  const std::size_t levels = orientations_.levels().size();
+  std::vector<std::size_t> at;           // the positions, each once
+  std::vector<std::vector<char>> masks;  // their levels to expand
+  for (const auto& [p, l] : wanted) {
+    const std::size_t i = std::find(at.begin(), at.end(), p) - at.begin();
+    if (i == at.size()) {
+      at.push_back(p);
+      masks.emplace_back(levels, 0);
+    }
+    masks[i][l] = !state.expanded[p * levels + l];
+    state.expanded[p * levels + l] = 1;
+  }
+  forEachPosition(at.size(), [&](std::size_t i) {
+    if (std::find(masks[i].begin(), masks[i].end(), 1) != masks[i].end())
+      utilitiesAt(hypotheses, state.groups, state.nearby[at[i]], state.positions[at[i]], at[i],
+                  masks[i], state.candidates[at[i]]);
   });
-  return end;
+  return at;
+}
+
+double NextBestViewPlanner::unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
+                                              Candidate& candidate) const {
+  if (candidate.unoccluded_total < 0.0) {
+    visibleMembers(hypotheses, state.groups, state.nearby[candidate.position],
+                   cameraOf(candidate, state.positions), candidate.seen);
+    // Summed as the exact utility is (per type, then over types), so that it is never below it.
+    std::vector<double>& per_type = candidate.unoccluded;
+    per_type.assign(hypotheses.types().size(), 0.0);
+    for (const SeenMember& member : candidate.seen)
+      per_type[hypotheses.hypotheses()[member.index].type] += member.utility;
+    candidate.unoccluded_total = std::accumulate(per_type.begin(), per_type.end(), 0.0);
+  }
+  return candidate.unoccluded_total;
 }
 
 double NextBestViewPlanner::exactUtility(const HypothesisSet& hypotheses, StepState& state,
                                          Candidate& candidate) const {
   if (candidate.exact_total < 0.0) {
+    unoccludedUtility(hypotheses, state, candidate);
     const std::size_t level = orientations_.levelOf(candidate.orientation);
-    candidate.exact = occludedUtility(
-        hypotheses, state.nearby[candidate.position], cameraOf(candidate, state.positions),
-        state.sight[candidate.position * orientations_.levels().size() + level]);
+    std::vector<signed char>& sight =
+        state.sight[candidate.position * orientations_.levels().size() + level];
+    if (sight.empty()) {
+      std::size_t members = 0;
+      for (std::uint32_t g : state.nearby[candidate.position])
+        members += state.groups.groups()[g].end - state.groups.groups()[g].begin;
+      sight.assign(members, -1);
+    }
+    const Eigen::Vector3d eye = cameraOf(candidate, state.positions).position;
+    candidate.exact.assign(hypotheses.types().size(), 0.0);
+    for (const SeenMember& member : candidate.seen) {
+      const Hypothesis& hypothesis = hypotheses.hypotheses()[member.index];
+      signed char& free = sight[member.slot];
+      if (free < 0)
+        free = map_.lineOfSight(eye, hypothesis.box) ? 1 : 0;
+      if (free == 1)
+        candidate.exact[hypothesis.type] += member.utility;
+    }
     candidate.exact_total = std::accumulate(candidate.exact.begin(), candidate.exact.end(), 0.0);
   }
   return candidate.exact_total;
@@ -637,8 +685,22 @@ void NextBestViewPlanner::boundCandidates(const HypothesisSet& hypotheses, StepS
 void NextBestViewPlanner::rateCandidate(const HypothesisSet& hypotheses, StepState& state,
                                         Candidate& candidate, bool prune, double& best_rating,
                                         Step& step) const {
+  // Covers the rounding of the sums (a bound's types may be summed in another order).
+  constexpr double kMargin = 1.0 + 1e-9;
+  auto cannot_count = [&](double utility) {
+    return utility <= 0.0 || (state.worth_moving && utility <= parameters_.min_utility_for_moving);
+  };
+  if (prune && candidate.exact_total < 0.0) {
+    // Without occlusion first: no line of sight is cast for a view that cannot win anyway.
+    if (cannot_count(unoccludedUtility(hypotheses, state, candidate) * kMargin))
+      return;
+    const TypeChoice bound = bestTypeSubset(candidate.unoccluded, state.utility_max,
+                                            state.type_count, parameters_.weights);
+    if (ratingBound(bound, state.positions[candidate.position], state) * kMargin <= best_rating)
+      return;
+  }
   const double total = exactUtility(hypotheses, state, candidate);
-  if (total <= 0.0 || (state.worth_moving && total <= parameters_.min_utility_for_moving))
+  if (cannot_count(total))
     return;
   const TypeChoice choice =
       bestTypeSubset(candidate.exact, state.utility_max, state.type_count, parameters_.weights);
@@ -678,15 +740,31 @@ void NextBestViewPlanner::rateCandidate(const HypothesisSet& hypotheses, StepSta
 PositionBounds NextBestViewPlanner::boundsAt(const HypothesisSet& hypotheses,
                                              const Eigen::Vector2d& position) const {
   const std::vector<Eigen::Vector2d> positions{position};
-  StepState state = startStep(hypotheses, positions, RobotState{});
+  const HypothesisGroups groups(hypotheses, kGroupCell, reach_);
+  StepState state = startStep(hypotheses, groups, positions, RobotState{});
   PositionBounds bounds;
-  positionBound(hypotheses, state.packed, state.nearby[0], position, bounds.position);
-  utilitiesAt(hypotheses, state.packed, state.nearby[0], position, 0, state.candidates[0]);
+  std::vector<double> level_bound;
+  positionBound(hypotheses, groups, state.nearby[0], position, level_bound);
+  const std::size_t types = hypotheses.types().size();
+  bounds.position.assign(types, 0.0);
+  for (std::size_t l = 0; l < orientations_.levels().size(); ++l) {
+    bounds.level.push_back(levelSlice(level_bound, l, types));
+    for (std::size_t t = 0; t < types; ++t)
+      bounds.position[t] = std::max(bounds.position[t], bounds.level[l][t]);
+  }
+  utilitiesAt(hypotheses, groups, state.nearby[0], position, 0,
+              std::vector<char>(orientations_.levels().size(), 1), state.candidates[0]);
   bounds.orientation.assign(orientations_.size(),
                             std::vector<double>(hypotheses.types().size(), 0.0));
   for (const Candidate& candidate : state.candidates[0])
     for (const auto& [type, u] : candidate.per_type)
       bounds.orientation[candidate.orientation][type] = u;
+  for (std::size_t o = 0; o < orientations_.size(); ++o) {
+    Candidate candidate;
+    candidate.orientation = o;
+    unoccludedUtility(hypotheses, state, candidate);
+    bounds.unoccluded.push_back(candidate.unoccluded);
+  }
   return bounds;
 }
 
@@ -715,6 +793,7 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
   double scale = 1.0, previous_rating = 0.0;
   std::size_t rated = 0;
   std::vector<RatedCandidate> rated_views;
+  const HypothesisGroups groups(hypotheses, kGroupCell, reach_);
   for (int k = 0; k < parameters_.max_steps; ++k) {
     const double radius = std::pow(scale, 0.382) * parameters_.lattice_radius;
     std::vector<Eigen::Vector2d> positions = hexagonalLattice(centre, radius, reach, low, high);
@@ -724,7 +803,7 @@ PlannedView NextBestViewPlanner::plan(const HypothesisSet& hypotheses,
                                    [this](const Eigen::Vector2d& xy) { return !reachable(xy); }),
                     positions.end());
     rated += positions.size() * orientations_.size();
-    Step step = rateStep(hypotheses, positions, current);
+    Step step = rateStep(hypotheses, groups, positions, current);
     if (!step.found)
       break;
     rated_views.insert(rated_views.end(), step.view.rated.begin(), step.view.rated.end());

@@ -15,8 +15,9 @@ void plotComparison(const std::vector<ModeMinutes>& modes, int seeds, const std:
   plot.x_label = "search mode";
   plot.y_label = "simulated minutes";
   PlotCurve median{"this suite: median", {}, 1, false};
-  PlotCurve fastest{"this suite: fastest run", {}, 1, true};
-  PlotCurve slowest{"this suite: slowest run", {}, 1, true};
+  // Own colours: with one style, which dashed line is which could not be told.
+  PlotCurve fastest{"this suite: fastest run", {}, 3, true};
+  PlotCurve slowest{"this suite: slowest run", {}, 4, true};
   PlotCurve paper{"the paper", {}, 2, false};
   for (std::size_t i = 0; i < modes.size(); ++i) {
     const double x = static_cast<double>(i + 1);

@@ -176,10 +176,18 @@ FurnitureSweep::FurnitureSweep(const RobotDescription& robot, const asr_robot_mo
   }
 }
 
-bool FurnitureSweep::nearVisited(const SearchView& view,
+bool FurnitureSweep::nearVisited(const SearchView& view, const std::vector<std::string>& types,
                                  const std::vector<VisitedView>& visited) const {
   const Eigen::Vector3d axis = view.camera.orientation * Eigen::Vector3d::UnitZ();
   for (const VisitedView& seen : visited) {
+    // A view that searched only some of the types (a next-best-view's choice) leaves the others
+    // to be looked for from there.
+    const bool searched_every_type =
+        std::all_of(types.begin(), types.end(), [&](const std::string& type) {
+          return std::count(seen.types.begin(), seen.types.end(), type) > 0;
+        });
+    if (!searched_every_type)
+      continue;
     const Eigen::Vector3d seen_axis = seen.camera.orientation * Eigen::Vector3d::UnitZ();
     const double angle = std::acos(std::clamp(axis.dot(seen_axis), -1.0, 1.0));
     if ((view.camera.position - seen.camera.position).norm() < tolerance_.distance &&
@@ -196,7 +204,7 @@ std::optional<SearchView> FurnitureSweep::next(const RobotState& current,
   std::optional<SearchView> best;
   double best_seconds = std::numeric_limits<double>::infinity();
   const auto consider = [&](const SearchView& view) {
-    if (nearVisited(view, visited))
+    if (nearVisited(view, types, visited))
       return;
     const double seconds = asr_robot_model::motionBetween(current, view.state, speeds_).seconds;
     if (seconds < best_seconds) {

@@ -8,6 +8,7 @@
 #include "asr_ism/thread_pool.hpp"
 #include "asr_nbv/candidate_views.hpp"
 #include "asr_nbv/hypotheses.hpp"
+#include "asr_nbv/hypothesis_groups.hpp"
 #include "asr_nbv/nbv_documents.hpp"
 #include "asr_nbv/nbv_parameters.hpp"
 #include "asr_nbv/raised_cosine_bound.hpp"
@@ -61,8 +62,14 @@ struct RatedViews {
 /// The bounds the bounded search rates by at one camera floor position, per type (for tests:
 /// neither may fall below the utility, occlusion aside, of any view they bound).
 struct PositionBounds {
-  std::vector<double> position;                  // >= every orientation's
+  std::vector<double> position;            // >= every level's
+  std::vector<std::vector<double>> level;  // per tilt level, >= its orientations'
+
   std::vector<std::vector<double>> orientation;  // the first pass's, per candidate orientation
+  /// Per candidate orientation, the utility without occlusion as the planner sums it before
+  /// casting lines of sight (groups of hypotheses that cannot be in view skipped): must equal
+  /// viewUtility's without a map.
+  std::vector<std::vector<double>> unoccluded;
 };
 
 /// How a step's candidates are rated. `bounded`: branch and bound over lattice positions (the
@@ -104,33 +111,48 @@ class NextBestViewPlanner {
   const asr_robot_model::InverseKinematics& kinematics() const { return kinematics_; }
 
  private:
+  struct SeenMember;
   struct Candidate;
-  struct PackedHypotheses;
   struct Step;
   struct StepState;
-  Step rateStep(const HypothesisSet& hypotheses, const std::vector<Eigen::Vector2d>& positions,
+  Step rateStep(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
+                const std::vector<Eigen::Vector2d>& positions,
                 const asr_robot_model::RobotState& current) const;
-  Step rateStepExhaustively(const HypothesisSet& hypotheses,
+  Step rateStepExhaustively(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                             const std::vector<Eigen::Vector2d>& positions,
                             const asr_robot_model::RobotState& current) const;
-  /// Per type, >= the first pass's utility of every orientation at `position` (so >= the exact
-  /// utility of every view from there): each nearby hypothesis counted once, with the best
-  /// orientation, side and proximity terms any tilt level can give it (the side term from the
-  /// elevation difference to the level's axis, which no heading can undercut).
-  void positionBound(const HypothesisSet& hypotheses, const PackedHypotheses& packed,
-                     const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
-                     std::vector<double>& per_type) const;
-  StepState startStep(const HypothesisSet& hypotheses,
+  /// Per tilt level and type (level x type), >= the first pass's utility of every orientation
+  /// of the level at `position` (so >= the exact utility of every view from there): each
+  /// nearby hypothesis counted once, with the best orientation, side and proximity terms the
+  /// level can give it (the side term from the elevation difference to the level's axis, which
+  /// no heading can undercut). A view has one level: the largest level's bound is its
+  /// position's, tighter than each hypothesis at its best level would give.
+  void positionBound(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
+                     const std::vector<std::uint32_t>& nearby, const Eigen::Vector2d& position,
+                     std::vector<double>& per_level_type) const;
+  /// passing[l]: whether a member of `group` may be seen from `position` at tilt level l;
+  /// false if none can at any.
+  bool groupLevels(const HypothesisGroups::Group& group, const Eigen::Vector2d& position,
+                   std::vector<char>& passing) const;
+  StepState startStep(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                       const std::vector<Eigen::Vector2d>& positions,
                       const asr_robot_model::RobotState& current) const;
   /// task(0 .. count - 1), on the pool if there is one.
   void forEachPosition(std::size_t count, const std::function<void(std::size_t)>& task) const;
-  /// The first pass (utilitiesAt) at order[next], order[next + 1], ... while `wanted` holds of
-  /// the position, a batch at a time in parallel; the index after the last one expanded.
-  std::size_t expand(const HypothesisSet& hypotheses, StepState& state,
-                     const std::vector<std::size_t>& order, std::size_t next,
-                     const std::function<bool(std::size_t)>& wanted) const;
-  /// The candidate's utility per type with occlusion (computed once).
+  /// Positions expanded at a time: a few per thread (more are expanded than needed at the end,
+  /// none twice).
+  std::size_t batchSize() const;
+  /// The first pass (utilitiesAt) at each (position, tilt level) of `wanted` not expanded
+  /// yet, in parallel over the positions; the positions, each once.
+  std::vector<std::size_t> expand(
+      const HypothesisSet& hypotheses, StepState& state,
+      const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const;
+  /// The candidate's utility without occlusion (computed once): the sum over the members it
+  /// sees, >= its exact utility.
+  double unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
+                           Candidate& candidate) const;
+  /// The candidate's utility per type with occlusion (computed once): lines of sight cast
+  /// from its camera position to the members it sees (once per position and tilt level).
   double exactUtility(const HypothesisSet& hypotheses, StepState& state,
                       Candidate& candidate) const;
   /// >= the rating of any view from a camera at `camera` (floor) searching `choice`: motion
@@ -145,25 +167,28 @@ class NextBestViewPlanner {
   /// bound with the exact utility cannot beat it.
   void rateCandidate(const HypothesisSet& hypotheses, StepState& state, Candidate& candidate,
                      bool prune, double& best_rating, Step& step) const;
-  void utilitiesAt(const HypothesisSet& hypotheses, const PackedHypotheses& packed,
-                   const std::vector<std::size_t>& nearby, const Eigen::Vector2d& position,
-                   std::size_t position_index, std::vector<Candidate>& candidates) const;
-  /// >= orientationUtility of the hypothesis seen from the camera at `offset` from it
+  /// The first pass at `position`, for the tilt levels `wanted`: per candidate orientation that
+  /// may see something, a bound
+  /// of its utility per type (each hypothesis adds its terms, by table look-up, to the few
+  /// orientations whose axis passes within the side angle of it).
+  void utilitiesAt(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
+                   const std::vector<std::uint32_t>& nearby, const Eigen::Vector2d& position,
+                   std::size_t position_index, const std::vector<char>& wanted,
+                   std::vector<Candidate>& candidates) const;
+  /// >= orientationUtility of the member seen from the camera at `offset` from it
   /// (`distance` its length), by table look-up.
-  double orientationBound(const PackedHypotheses& packed, std::size_t index,
+  double orientationBound(const HypothesisGroups& groups, std::uint32_t member,
                           const Eigen::Vector3d& offset, double distance) const;
   /// False if no base position within camera_reach_ of the camera's floor point (sampled on
   /// its circle) is free: the camera cannot be carried there.
   bool reachable(const Eigen::Vector2d& camera) const;
   asr_common::Pose cameraOf(const Candidate& candidate,
                             const std::vector<Eigen::Vector2d>& positions) const;
-  /// Utility per type of the hypotheses `nearby` seen from `camera`, occluded ones excluded.
-  /// `sight`: lines of sight from this camera position to `nearby` (1 free, 0 blocked, -1 not
-  /// yet cast; empty: none cast), filled as they are cast.
-  std::vector<double> occludedUtility(const HypothesisSet& hypotheses,
-                                      const std::vector<std::size_t>& nearby,
-                                      const asr_common::Pose& camera,
-                                      std::vector<signed char>& sight) const;
+  /// The members of the groups `nearby` that `camera` sees, occlusion aside, in index order
+  /// (groups wholly outside the frustum's side angle or depth skipped).
+  void visibleMembers(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
+                      const std::vector<std::uint32_t>& nearby, const asr_common::Pose& camera,
+                      std::vector<SeenMember>& seen) const;
 
   asr_robot_model::RobotDescription robot_;
   asr_robot_model::InverseKinematics kinematics_;
@@ -178,7 +203,11 @@ class NextBestViewPlanner {
   std::vector<double> level_sine_, level_cosine_;  // of each level's axis elevation
   // The first pass's bounds of the orientation, side and proximity terms.
   RaisedCosineBound orientation_bound_, side_bound_, proximity_bound_;
-  double camera_reach_ = 0.0;  // metres from the base's centre to the camera, on the floor
+  double camera_reach_ = 0.0;
+  // Half the smaller field of view, its cosine and sine; the farthest a visible point can be
+  // (far plane / that cosine); the middle of the clipping range.
+  double side_angle_ = 0.0, side_cosine_ = 1.0, side_sine_ = 0.0, reach_ = 0.0,
+         middle_ = 0.0;  // metres from the base's centre to the camera, on the floor
   CandidateSearch search_;
 };
 

@@ -34,7 +34,7 @@ struct VisitedViewTolerance {
 /// only) first, then a sweep that covers points over the top of every piece of furniture, each
 /// from the four sides (objects are often recognisable from some sides only); each
 /// time the view cheapest to reach from where the robot is, and never one close to a view
-/// already visited.
+/// already visited that searched every type still searched.
 class FurnitureSweep : public DirectSearch {
  public:
   /// `demonstrated`: where objects were seen in the demonstrations (in map; may be empty).
@@ -56,7 +56,9 @@ class FurnitureSweep : public DirectSearch {
     SearchView view;
     std::vector<std::string> types;  // of the demonstrated objects it shows
   };
-  bool nearVisited(const SearchView& view, const std::vector<VisitedView>& visited) const;
+  // Whether a view near `view` already searched every one of `types`.
+  bool nearVisited(const SearchView& view, const std::vector<std::string>& types,
+                   const std::vector<VisitedView>& visited) const;
 
   asr_robot_model::MotionSpeeds speeds_;
   VisitedViewTolerance tolerance_;
