@@ -432,26 +432,41 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
   StepState state = startStep(hypotheses, groups, positions, current);
   // Branch and bound over the positions: a bound per position and type first (cheap, one term
   // per hypothesis), then the first pass (every orientation) only where the bound can still win.
-  const std::size_t count = positions.size();
-  const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
-  std::vector<std::vector<double>> level_bound(count);  // level x type
-  std::vector<double> total_bound(count, -1.0);         // the largest level's
-  forEachPosition(count, [&](std::size_t p) {
-    if (state.nearby[p].empty())
-      return;
-    positionBound(hypotheses, groups, state.nearby[p], positions[p], level_bound[p]);
-    for (std::size_t l = 0; l < levels; ++l)
-      total_bound[p] = std::max(total_bound[p], levelTotal(level_bound[p], l, types));
-  });
+  const std::vector<std::vector<double>> level_bound =
+      positionBounds(hypotheses, groups, state, positions);
+  findUtilityMax(hypotheses, state, level_bound);
+  Step step;
+  if (state.utility_max <= 0.0)
+    return step;
+  state.worth_moving = state.utility_max > parameters_.min_utility_for_moving;
+  rateBestFirst(hypotheses, state, positions, level_bound, step);
+  return step;
+}
 
-  // The normaliser: the largest exact utility. Occlusion only lowers utilities, so the first
-  // pass bounds them: best first, positions (by their bound, expanded a batch at a time) and
-  // their candidates (by the first pass's) from one queue, until no bound exceeds the largest
-  // exact utility found; lines of sight are cast only for the candidates taken from it.
+std::vector<std::vector<double>> NextBestViewPlanner::positionBounds(
+    const HypothesisSet& hypotheses, const HypothesisGroups& groups, const StepState& state,
+    const std::vector<Eigen::Vector2d>& positions) const {
+  std::vector<std::vector<double>> level_bound(positions.size());
+  forEachPosition(positions.size(), [&](std::size_t p) {
+    if (!state.nearby[p].empty())
+      positionBound(hypotheses, groups, state.nearby[p], positions[p], level_bound[p]);
+  });
+  return level_bound;
+}
+
+void NextBestViewPlanner::findUtilityMax(
+    const HypothesisSet& hypotheses, StepState& state,
+    const std::vector<std::vector<double>>& level_bound) const {
+  // Occlusion only lowers utilities, so the first pass bounds them: best first, positions (by
+  // their bound, expanded a batch at a time) and their candidates (by the first pass's) from one
+  // queue, until no bound exceeds the largest exact utility found; lines of sight are cast only
+  // for the candidates taken from it.
+  const std::size_t count = level_bound.size();
+  const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
   double& utility_max = state.utility_max;
   std::priority_queue<Queued> best_first;
   for (std::size_t p = 0; p < count; ++p)
-    for (std::size_t l = 0; p < count && !state.nearby[p].empty() && l < levels; ++l)
+    for (std::size_t l = 0; !state.nearby[p].empty() && l < levels; ++l)
       if (const double total = levelTotal(level_bound[p], l, types); total > 0.0)
         best_first.push({total, p, kLevelKey + l, 0});
   std::vector<std::pair<std::size_t, std::size_t>> batch;
@@ -484,27 +499,31 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
           best_first.push({candidate.total, p, candidate.orientation, k});
       }
   }
-  Step step;
-  if (utility_max <= 0.0)
-    return step;
-  state.worth_moving = utility_max > parameters_.min_utility_for_moving;
+}
 
-  // The rating: candidates in falling order of their bound (motion free, no occlusion) until
-  // none can beat the best; a position's bound (its types' bounds) is at least its candidates',
-  // so a position is expanded only once its bound reaches the best candidate waiting.
+void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepState& state,
+                                        const std::vector<Eigen::Vector2d>& positions,
+                                        const std::vector<std::vector<double>>& level_bound,
+                                        Step& step) const {
+  // Candidates in falling order of their bound (motion free, no occlusion) until none can beat
+  // the best; a position's bound (its types' bounds) is at least its candidates', so a position
+  // is expanded only once its bound reaches the best candidate waiting.
+  const std::size_t count = positions.size();
+  const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
   std::vector<double> level_rating(count * levels, -1.0);  // position x level
   for (std::size_t p = 0; p < count; ++p) {
     for (std::size_t l = 0; l < levels && !state.nearby[p].empty(); ++l) {
       const double total = levelTotal(level_bound[p], l, types);
       if (total > 0.0 && !(state.worth_moving && total <= parameters_.min_utility_for_moving))
         level_rating[p * levels + l] =
-            ratingBound(bestTypeSubset(levelSlice(level_bound[p], l, types), utility_max,
+            ratingBound(bestTypeSubset(levelSlice(level_bound[p], l, types), state.utility_max,
                                        state.type_count, parameters_.weights),
                         positions[p], state);
     }
   }
   const std::vector<std::size_t> by_rating = fallingOrder(level_rating);
   std::priority_queue<Queued> queue;
+  std::vector<std::pair<std::size_t, std::size_t>> batch;
   double best_rating = -1.0;
   std::size_t next = 0;
   for (;;) {
@@ -527,13 +546,12 @@ NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
         }
     }
     if (queue.empty() || queue.top().bound <= best_rating)
-      break;
+      return;
     const Queued top = queue.top();
     queue.pop();
     rateCandidate(hypotheses, state, state.candidates[top.position][top.index], true, best_rating,
                   step);
   }
-  return step;
 }
 
 NextBestViewPlanner::Step NextBestViewPlanner::rateStepExhaustively(

@@ -121,6 +121,19 @@ class NextBestViewPlanner {
   Step rateStepExhaustively(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                             const std::vector<Eigen::Vector2d>& positions,
                             const asr_robot_model::RobotState& current) const;
+  /// Per position, positionBound (empty where no hypothesis is near), in parallel.
+  std::vector<std::vector<double>> positionBounds(
+      const HypothesisSet& hypotheses, const HypothesisGroups& groups, const StepState& state,
+      const std::vector<Eigen::Vector2d>& positions) const;
+  /// The step's normaliser, its largest exact utility, into state.utility_max: best first over
+  /// the positions' level bounds and their candidates' utilities.
+  void findUtilityMax(const HypothesisSet& hypotheses, StepState& state,
+                      const std::vector<std::vector<double>>& level_bound) const;
+  /// The best rated view of the step into `step`: candidates best first by their rating
+  /// bounds, positions expanded only once their level bound can still win.
+  void rateBestFirst(const HypothesisSet& hypotheses, StepState& state,
+                     const std::vector<Eigen::Vector2d>& positions,
+                     const std::vector<std::vector<double>>& level_bound, Step& step) const;
   /// Per tilt level and type (level x type), >= the first pass's utility of every orientation
   /// of the level at `position` (so >= the exact utility of every view from there): each
   /// nearby hypothesis counted once, with the best orientation, side and proximity terms the
