@@ -61,6 +61,25 @@ class ExactSearch : public ::testing::Test {
     return configuration;
   }
 
+  // Where the search under a small budget gave up, its best is the first evaluation's; where it
+  // completed, the exact one. Counts each outcome.
+  struct BudgetOutcomes {
+    int given_up = 0, completed = 0;
+  };
+  static void expectFirstBestOrExact(const IsmTree& tree, const Configuration& configuration,
+                                     const TreeRecognitionStats& stats, double bounded,
+                                     double exact, BudgetOutcomes& outcomes) {
+    if (stats.exact_searches_given_up > 0) {
+      ++outcomes.given_up;
+      TreeRecognitionParameters few;
+      few.exact_best = false;
+      EXPECT_EQ(bounded, bestConfidence(TreeRecognizer(tree, few).recognize(configuration)));
+    } else {
+      ++outcomes.completed;
+      EXPECT_NEAR(bounded, exact, 1e-9);
+    }
+  }
+
   inline static const std::vector<asr_common::ObjectKey> kObjects = {
       {"Plate", "1"}, {"Cup", "1"}, {"Knife", "1"}, {"Fork", "1"}, {"Spoon", "1"}};
   asr_ism::Demonstration demonstration_;
@@ -131,69 +150,51 @@ TEST_F(ExactSearch, WithoutTheExactSearchATreeCanFallShort) {
 TEST_F(ExactSearch, WorkIsBoundedAndWhereItRunsOutTheFirstBestStands) {
   // With a small budget of comparisons, the search gives up within it wherever it needs more,
   // and the answer is then the first evaluation's; where it stays within, the exact one.
-  TreeRecognitionParameters few;
-  few.exact_best = false;
   TreeRecognitionParameters small_budget;
   small_budget.exact_search_max_comparisons = 2000;
   std::mt19937 random(7);
-  int given_up = 0, completed = 0;
+  BudgetOutcomes outcomes;
   for (int trial = 0; trial < 150; ++trial) {
     const Configuration configuration = randomCase(random);
     for (const auto& [name, tree] : trees_) {
+      SCOPED_TRACE(name + ", case " + std::to_string(trial));
       TreeRecognitionStats stats;
       const double bounded =
           bestConfidence(TreeRecognizer(tree, small_budget).recognize(configuration, &stats));
-      EXPECT_LE(stats.exact_search_comparisons, small_budget.exact_search_max_comparisons)
-          << name << ", case " << trial;
-      if (stats.exact_searches_given_up > 0) {
-        ++given_up;
-        EXPECT_EQ(bounded, bestConfidence(TreeRecognizer(tree, few).recognize(configuration)))
-            << name << ", case " << trial;
-      } else {
-        ++completed;
-        EXPECT_NEAR(bounded, bestConfidence(TreeRecognizer(tree).recognize(configuration)), 1e-9)
-            << name << ", case " << trial;
-      }
+      EXPECT_LE(stats.exact_search_comparisons, small_budget.exact_search_max_comparisons);
+      const double exact = bestConfidence(TreeRecognizer(tree).recognize(configuration));
+      expectFirstBestOrExact(tree, configuration, stats, bounded, exact, outcomes);
     }
   }
-  EXPECT_GT(given_up, 0);
-  EXPECT_GT(completed, 0);
+  EXPECT_GT(outcomes.given_up, 0);
+  EXPECT_GT(outcomes.completed, 0);
 }
 
 TEST_F(ExactSearch, VotesCastOverTheWholeRecognitionAreBounded) {
   // The total of votes cast by the exact search, over all its ISM evaluations, stays within its
   // cap; where it runs out, the first evaluation's best stands.
-  TreeRecognitionParameters few;
-  few.exact_best = false;
   TreeRecognitionParameters small_budget;
   small_budget.exact_search_max_total_votes = 150;
   std::mt19937 random(9);
-  int given_up = 0, completed = 0;
+  BudgetOutcomes outcomes;
   for (int trial = 0; trial < 100; ++trial) {
     const Configuration configuration = randomCase(random);
     for (const auto& [name, tree] : trees_) {
+      SCOPED_TRACE(name + ", case " + std::to_string(trial));
       TreeRecognitionStats stats, unbounded_stats;
       const double bounded =
           bestConfidence(TreeRecognizer(tree, small_budget).recognize(configuration, &stats));
       const double exact =
           bestConfidence(TreeRecognizer(tree).recognize(configuration, &unbounded_stats));
-      EXPECT_LE(stats.exact_search_votes, small_budget.exact_search_max_total_votes)
-          << name << ", case " << trial;
+      EXPECT_LE(stats.exact_search_votes, small_budget.exact_search_max_total_votes);
       if (unbounded_stats.exact_search_votes > small_budget.exact_search_max_total_votes) {
-        EXPECT_GT(stats.exact_searches_given_up, 0u) << name << ", case " << trial;
+        EXPECT_GT(stats.exact_searches_given_up, 0u);
       }
-      if (stats.exact_searches_given_up > 0) {
-        ++given_up;
-        EXPECT_EQ(bounded, bestConfidence(TreeRecognizer(tree, few).recognize(configuration)))
-            << name << ", case " << trial;
-      } else {
-        ++completed;
-        EXPECT_NEAR(bounded, exact, 1e-9) << name << ", case " << trial;
-      }
+      expectFirstBestOrExact(tree, configuration, stats, bounded, exact, outcomes);
     }
   }
-  EXPECT_GT(given_up, 0);
-  EXPECT_GT(completed, 0);
+  EXPECT_GT(outcomes.given_up, 0);
+  EXPECT_GT(outcomes.completed, 0);
 }
 
 }  // namespace

@@ -32,7 +32,6 @@ class HypothesisGroups {
   const Eigen::Vector3d& point(std::uint32_t member) const { return points_[member]; }
   std::uint32_t normalsBegin(std::uint32_t member) const { return normals_begin_[member]; }
   const Eigen::Vector3d& normal(std::uint32_t n) const { return normals_[n]; }
-  std::size_t memberCount() const { return index_.size(); }
 
   /// The groups that may have a member within the constructor's `reach` of `point` on the
   /// floor, in group order.
