@@ -4,12 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <tuple>
 
 #include "asr_common/input_error.hpp"
 #include "asr_ism_tree/estimate_matching.hpp"
 #include "asr_ism_tree/repeated_detections.hpp"
 #include "exact_best_search.hpp"
+#include "relaxed_tree_bound.hpp"
 
 namespace asr_ism_tree {
 
@@ -22,6 +24,17 @@ struct EvaluatedIsm {
   std::vector<IsmResult> results;
   std::vector<int> input_origin;
 };
+
+// Root objectives within this of each other are equal (rounding of sums of similarities).
+constexpr double kObjectiveMargin = 1e-9;
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
+// Votes and results grouped within 1 % of the support radius and of the maximum angle
+// deviation: on the synthetic scenes of exact_search_test, coarser groups gave looser bounds.
+RelaxedBoundParameters relaxedBoundParameters(const IsmTree& tree, std::size_t max_work) {
+  return {0.01 * tree.parameters.supportRadius(), 0.01 * tree.parameters.max_angle_deviation,
+          max_work};
+}
 
 // Thrown where the exact search would exceed its budget.
 struct ExactSearchTooLarge {};
@@ -278,7 +291,8 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
                                    const std::vector<Pose>& poses,
                                    const std::vector<std::vector<int>>& estimates_of_object,
                                    std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
-                                   ExactSearchBudget& budget, std::size_t* given_up) const {
+                                   ExactSearchBudget& budget, TreeRecognitionStats* stats,
+                                   std::size_t TreeRecognitionStats::*given_up) const {
   std::vector<bool> object_seen(tree_.objects().size());
   for (std::size_t object = 0; object < object_seen.size(); ++object)
     object_seen[object] = !estimates_of_object[object].empty();
@@ -289,15 +303,35 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
     const auto& results = evaluated[ism].results;
     return results.empty() ? 0.0 : results.front().objective;
   };
+  const double best_before = best(0);
   const auto start = from_lower_bounds ? ExactBestSearch::Start::kLowerBounds
                                        : ExactBestSearch::Start::kFirstEvaluation;
   try {
     return ExactBestSearch(tree_, std::move(object_seen), evaluate, best, start).run(bottom_up_);
   } catch (const ExactSearchTooLarge&) {
-    if (given_up != nullptr)
-      ++*given_up;
-    return false;  // the best found before stands
   }
+  // The best found before stands; the relaxed bound, if asked for, may show that nothing beats
+  // it, or by how much something could.
+  std::optional<double> bound;
+  if (parameters_.relaxed_bound_max_work > 0) {
+    std::size_t work = 0;
+    bound =
+        relaxedRootBound(tree_, bottom_up_, poses, estimates_of_object,
+                         relaxedBoundParameters(tree_, parameters_.relaxed_bound_max_work), &work);
+    if (stats != nullptr)
+      stats->relaxed_bound_work += work;
+  }
+  const double gap = bound ? std::max(0.0, *bound - best_before) : kUnbounded;
+  if (stats != nullptr) {
+    if (gap <= kObjectiveMargin) {
+      ++stats->exact_searches_proven_by_bound;
+    } else {
+      ++(stats->*given_up);
+      stats->largest_possible_shortfall =
+          std::max(stats->largest_possible_shortfall, gap / static_cast<double>(leaves_.size()));
+    }
+  }
+  return false;
 }
 
 TreeEvaluation TreeRecognizer::evaluateIsms(
@@ -325,16 +359,16 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
   if (exact && tree_.isms.size() > 1) {
     evaluation.exact = evaluated;
     evaluation.has_exact =
-        searchExactly(evaluation.exact, false, poses, estimates_of_object, ism_stats, budget,
-                      stats != nullptr ? &stats->exact_searches_given_up : nullptr);
+        searchExactly(evaluation.exact, false, poses, estimates_of_object, ism_stats, budget, stats,
+                      &TreeRecognitionStats::exact_searches_given_up);
   }
   if (exact && parameters_.exact_over_repeats && with_repeats != nullptr) {
     // Every result found over the representatives is one over every estimate too: their best
     // is a lower bound the search over every repeat starts from (docs/recognition.md).
     evaluation.over_repeats = evaluation.has_exact ? evaluation.exact : evaluated;
     evaluation.has_over_repeats =
-        searchExactly(evaluation.over_repeats, true, poses, *with_repeats, ism_stats, budget,
-                      stats != nullptr ? &stats->repeat_searches_given_up : nullptr);
+        searchExactly(evaluation.over_repeats, true, poses, *with_repeats, ism_stats, budget, stats,
+                      &TreeRecognitionStats::repeat_searches_given_up);
   }
   if (stats != nullptr) {
     for (const auto& s : ism_stats) {

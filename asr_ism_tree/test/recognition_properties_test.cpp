@@ -106,7 +106,8 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
   const Learned& scene = learned(GetParam());
   std::mt19937 random(12);
   double worst = 0.0, worst_given_up = 0.0;
-  int given_up = 0;
+  int given_up = 0, either_given_up = 0, proven = 0;
+  double largest_possible = 0.0;
   std::size_t most_work = 0;  // comparisons of the exact search in one recognition
   for (const auto& [topology, tree] : scene.trees) {
     const TreeRecognizer recognizer(tree);
@@ -124,21 +125,33 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
       TreeRecognitionStats removed_stats, changed_stats;
       const double without = bestConfidence(recognizer.recognize(removed, &removed_stats));
       const double with = bestConfidence(recognizer.recognize(changed, &changed_stats));
-      const bool exact =
-          removed_stats.exact_searches_given_up == 0 && changed_stats.exact_searches_given_up == 0;
+      // Only where the search with the object given up can its best fall short; by at most what
+      // the relaxed bound shows, if it completed.
+      const bool exact = changed_stats.exact_searches_given_up == 0;
+      const double tolerance =
+          exact ? kExactTolerance
+                : std::min(kTreeTolerance, changed_stats.largest_possible_shortfall + 1e-9);
       (exact ? worst : worst_given_up) = std::max(exact ? worst : worst_given_up, without - with);
       given_up += exact ? 0 : 1;
+      either_given_up +=
+          changed_stats.exact_searches_given_up + removed_stats.exact_searches_given_up > 0 ? 1 : 0;
+      proven += static_cast<int>(changed_stats.exact_searches_proven_by_bound +
+                                 removed_stats.exact_searches_proven_by_bound);
+      largest_possible = std::max(largest_possible, changed_stats.largest_possible_shortfall);
       most_work = std::max({most_work, removed_stats.exact_search_comparisons,
                             changed_stats.exact_search_comparisons});
-      EXPECT_GE(with, without - (exact ? kExactTolerance : kTreeTolerance))
+      EXPECT_GE(with, without - tolerance)
           << topology << " tree, set " << step << ", " << recorded[object].key.toString()
           << " perturbed at scale " << scale;
     }
   }
   std::cout << GetParam().scene << ": largest shortfall " << worst
-            << "; the exact search gave up in " << given_up << " cases, largest shortfall there "
-            << worst_given_up << "; at most " << most_work
-            << " comparisons in the exact search of one recognition\n";
+            << "; the exact search gave up in " << given_up << " cases with the object seen ("
+            << either_given_up << " with or without it), largest shortfall there " << worst_given_up
+            << "; at most " << most_work << " comparisons in the exact search of one recognition; "
+            << proven
+            << " searches proven by the relaxed bound, largest possible shortfall shown by it "
+            << largest_possible << "\n";
 }
 
 // The example: in office2016 (complete tree), a marker turned about 30 deg scored 0.57

@@ -59,6 +59,14 @@ struct TreeRecognitionParameters {
   /// the development machine (0.2 s for all), which the comparisons do not count. With both
   /// caps one recognition's exact search stays below about 0.5 s (docs/recognition.md).
   std::size_t exact_search_max_total_votes = 100000;
+  /// Where the exact search gives up: 0 (default), the first best stands unchecked. n > 0: an
+  /// upper bound of the exhaustive search's best is computed with at most n comparisons
+  /// (relaxed_tree_bound.hpp); where it is the first best, that best is proven (counted in
+  /// `exact_searches_proven_by_bound`, not as given up), elsewhere it bounds the shortfall
+  /// (`largest_possible_shortfall`). Off by default: on the kitchen recordings, where the search
+  /// gives up, the bound either needs more than 30 million comparisons (about 1 s) or is too
+  /// loose to prove anything (docs/recognition.md).
+  std::size_t relaxed_bound_max_work = 0;
   /// Every sub-ISM passes every result up (of results at one pose, the best): the exhaustive
   /// search, slow beyond small scenes; what the exact search is tested against.
   bool pass_every_result = false;
@@ -78,6 +86,13 @@ struct TreeRecognitionStats {
   std::size_t repeat_searches_given_up = 0;
   std::size_t exact_search_comparisons = 0;  // spent by the exact search (within isms as well)
   std::size_t exact_search_votes = 0;        // cast by the exact search (within isms as well)
+  /// Searches that ran out of budget but whose best the relaxed bound (relaxed_tree_bound.hpp)
+  /// proved to be the exhaustive search's: not counted as given up.
+  std::size_t exact_searches_proven_by_bound = 0;
+  /// Where searches were given up, the most (in confidence) by which the best instance can fall
+  /// short of the exhaustive search's, as the relaxed bound shows; infinity where it ran out too.
+  double largest_possible_shortfall = 0.0;
+  std::size_t relaxed_bound_work = 0;  // comparisons and votes of the relaxed bounds
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
@@ -132,7 +147,8 @@ class TreeRecognizer {
                      const std::vector<Pose>& poses,
                      const std::vector<std::vector<int>>& estimates_of_object,
                      std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
-                     ExactSearchBudget& budget, std::size_t* given_up) const;
+                     ExactSearchBudget& budget, TreeRecognitionStats* stats,
+                     std::size_t TreeRecognitionStats::*given_up) const;
   // Per object, one estimate for each group of repeated detections; returns how many were left
   // out.
   std::size_t mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
