@@ -49,6 +49,31 @@ double chord(double angle, double length) {
   return 2.0 * std::sin(0.5 * std::min(angle, M_PI)) * length;
 }
 
+// Widens `group` so that it covers every pose of `pose` too.
+void absorb(PoseCloud& group, const PoseCloud& pose) {
+  group.position_slack =
+      std::max(group.position_slack, (pose.position - group.position).norm() + pose.position_slack);
+  group.angle_slack =
+      std::max(group.angle_slack,
+               asr_common::angleBetween(pose.orientation, group.orientation) + pose.angle_slack);
+  group.weight = std::max(group.weight, pose.weight);
+}
+
+// The votes of every pose of `input` through one relative pose, as the ISM casts them.
+VoteCloud castVote(const PoseCloud& input, const Pose& reference_in_member) {
+  const Pose& t = reference_in_member;
+  VoteCloud vote;
+  vote.vote.position = input.position + input.orientation * t.position;
+  vote.vote.orientation = input.orientation * t.orientation;
+  vote.vote.position_slack = input.position_slack + chord(input.angle_slack, t.position.norm());
+  vote.vote.angle_slack = input.angle_slack;
+  vote.vote.weight = input.weight;
+  vote.object = input.position;
+  vote.object_slack = input.position_slack;
+  vote.member_point = -(t.orientation.conjugate() * t.position);
+  return vote;
+}
+
 class RelaxedEvaluation {
  public:
   RelaxedEvaluation(const IsmTree& tree, const RelaxedBoundParameters& parameters)
@@ -80,19 +105,13 @@ class RelaxedEvaluation {
     std::vector<PoseCloud> results;
     for (const auto& of_member : clouds) {
       for (const VoteCloud& candidate : of_member) {
-        const Cell own = cellOf(candidate.vote.position, cell);
         double objective = 0.0;
         for (std::size_t m = 0; m < members.size(); ++m) {
           double best = 0.0;
-          for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-              for (int dz = -1; dz <= 1; ++dz) {
-                const auto found = grid[m].find({own[0] + dx, own[1] + dy, own[2] + dz});
-                if (found == grid[m].end())
-                  continue;
-                for (int v : found->second)
-                  best = std::max(best, similarityBound(clouds[m][v], candidate));
-              }
+          forEachNear(grid[m], cellOf(candidate.vote.position, cell), [&](int v) {
+            best = std::max(best, similarityBound(clouds[m][v], candidate));
+            return false;
+          });
           objective += best;
         }
         if (objective > 0.0) {
@@ -105,6 +124,8 @@ class RelaxedEvaluation {
     return results;
   }
 
+  std::size_t work() const { return work_; }
+
   // Poses within the radii of a group's first one (the heaviest first) join it.
   std::vector<PoseCloud> grouped(std::vector<PoseCloud> poses) {
     std::sort(poses.begin(), poses.end(),
@@ -115,30 +136,25 @@ class RelaxedEvaluation {
     for (const PoseCloud& pose : poses) {
       spend(1);
       const int joined = nearbyGroup(
-          grid, groups, cell,
-          [&](const PoseCloud& group) {
-            return (pose.position - group.position).norm() <= parameters_.position_radius &&
-                   asr_common::angleBetween(pose.orientation, group.orientation) <=
-                       parameters_.angle_radius;
-          },
+          grid, groups, cell, [&](const PoseCloud& group) { return withinRadii(pose, group); },
           pose.position);
       if (joined < 0) {
         grid[cellOf(pose.position, cell)].push_back(static_cast<int>(groups.size()));
         groups.push_back(pose);
         continue;
       }
-      PoseCloud& group = groups[joined];
-      group.position_slack = std::max(
-          group.position_slack, (pose.position - group.position).norm() + pose.position_slack);
-      group.angle_slack = std::max(
-          group.angle_slack,
-          asr_common::angleBetween(pose.orientation, group.orientation) + pose.angle_slack);
-      group.weight = std::max(group.weight, pose.weight);
+      absorb(groups[joined], pose);
     }
     return groups;
   }
 
  private:
+  bool withinRadii(const PoseCloud& pose, const PoseCloud& group) const {
+    return (pose.position - group.position).norm() <= parameters_.position_radius &&
+           asr_common::angleBetween(pose.orientation, group.orientation) <=
+               parameters_.angle_radius;
+  }
+
   // The votes of one member's inputs, grouped like results.
   std::vector<VoteCloud> voteClouds(const asr_ism::IsmMember& member,
                                     const std::vector<PoseCloud>& inputs) {
@@ -148,23 +164,11 @@ class RelaxedEvaluation {
     for (const PoseCloud& input : inputs) {
       for (const auto& relative : member.relative_poses) {
         spend(1);
-        const Pose& t = relative.reference_in_member;
-        VoteCloud vote;
-        vote.vote.position = input.position + input.orientation * t.position;
-        vote.vote.orientation = input.orientation * t.orientation;
-        vote.vote.position_slack =
-            input.position_slack + chord(input.angle_slack, t.position.norm());
-        vote.vote.angle_slack = input.angle_slack;
-        vote.vote.weight = input.weight;
-        vote.object = input.position;
-        vote.object_slack = input.position_slack;
-        vote.member_point = -(t.orientation.conjugate() * t.position);
+        const VoteCloud vote = castVote(input, relative.reference_in_member);
         const auto near = [&](const VoteCloud& group) {
-          return (vote.vote.position - group.vote.position).norm() <= parameters_.position_radius &&
+          return withinRadii(vote.vote, group.vote) &&
                  (vote.object - group.object).norm() <= parameters_.position_radius &&
-                 (vote.member_point - group.member_point).norm() <= parameters_.position_radius &&
-                 asr_common::angleBetween(vote.vote.orientation, group.vote.orientation) <=
-                     parameters_.angle_radius;
+                 (vote.member_point - group.member_point).norm() <= parameters_.position_radius;
         };
         const int joined = nearbyGroup(grid, clouds, cell, near, vote.vote.position);
         if (joined < 0) {
@@ -173,14 +177,7 @@ class RelaxedEvaluation {
           continue;
         }
         VoteCloud& group = clouds[joined];
-        group.vote.position_slack =
-            std::max(group.vote.position_slack,
-                     (vote.vote.position - group.vote.position).norm() + vote.vote.position_slack);
-        group.vote.angle_slack =
-            std::max(group.vote.angle_slack,
-                     asr_common::angleBetween(vote.vote.orientation, group.vote.orientation) +
-                         vote.vote.angle_slack);
-        group.vote.weight = std::max(group.vote.weight, vote.vote.weight);
+        absorb(group.vote, vote.vote);
         group.object_slack =
             std::max(group.object_slack, (vote.object - group.object).norm() + vote.object_slack);
         group.member_slack =
@@ -194,20 +191,30 @@ class RelaxedEvaluation {
   template <typename Group, typename Near>
   int nearbyGroup(const std::map<Cell, std::vector<int>>& grid, const std::vector<Group>& groups,
                   double cell, Near near, const Vector3d& position) {
-    const Cell own = cellOf(position, cell);
+    int found = -1;
+    forEachNear(grid, cellOf(position, cell), [&](int g) {
+      spend(1);
+      found = near(groups[g]) ? g : -1;
+      return found >= 0;
+    });
+    return found;
+  }
+
+  // Calls `visit` with every entry of `cell` and the 26 cells around it until it returns true.
+  template <typename Visit>
+  static void forEachNear(const std::map<Cell, std::vector<int>>& grid, const Cell& cell,
+                          Visit visit) {
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz) {
-          const auto found = grid.find({own[0] + dx, own[1] + dy, own[2] + dz});
+          const auto found = grid.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
           if (found == grid.end())
             continue;
-          for (int g : found->second) {
-            spend(1);
-            if (near(groups[g]))
-              return g;
+          for (int entry : found->second) {
+            if (visit(entry))
+              return;
           }
         }
-    return -1;
   }
 
   // The most any vote of `cloud` can score for any hypothesis in `candidate` (the support test
@@ -245,14 +252,12 @@ class RelaxedEvaluation {
       throw OverBudget{};
   }
 
- public:
-  std::size_t work_ = 0;
-
  private:
   const IsmTree& tree_;
   const RelaxedBoundParameters parameters_;
   const double radius_;
   const double sin_half_squared_max_;
+  std::size_t work_ = 0;
 };
 
 }  // namespace
@@ -291,7 +296,7 @@ std::optional<double> relaxedRootBound(const IsmTree& tree, const std::vector<in
     bound.reset();
   }
   if (work != nullptr)
-    *work = evaluation.work_;
+    *work = evaluation.work();
   return bound;
 }
 
