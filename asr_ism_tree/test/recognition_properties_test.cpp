@@ -31,11 +31,14 @@ using asr_common::testing::recording;
 
 constexpr double kDegree = M_PI / 180.0;
 // How much lower than without it a badly seen object may leave the best instance of a tree: where
-// the exact search completes (exact_best_search.hpp), rounding only; where it gives up (beyond
-// its votes or comparisons caps), the first evaluation's best stands, which passed up a few
-// results per sub-ISM (the largest shortfalls measured over these cases are printed).
+// the exact search completes (exact_best_search.hpp), rounding only, which is guaranteed. Where
+// it gives up (beyond its votes or comparisons caps), the better of the first evaluation's best
+// and that of the pose-diverse evaluation stands, which is not guaranteed to be the exhaustive
+// search's; over these seeded cases it falls short by rounding only (measured; before the
+// pose-diverse evaluation by up to 0.031 in Gedeck_Ende), so a change that brings the
+// shortfall back fails here (the largest shortfalls are printed).
 constexpr double kExactTolerance = 1e-9;
-constexpr double kTreeTolerance = 0.05;
+constexpr double kTreeTolerance = 1e-9;
 
 struct SceneFile {
   const char* file;

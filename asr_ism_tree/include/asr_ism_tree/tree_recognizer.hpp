@@ -67,6 +67,16 @@ struct TreeRecognitionParameters {
   /// gives up, the bound either needs more than 30 million comparisons (about 1 s) or is too
   /// loose to prove anything (docs/recognition.md).
   std::size_t relaxed_bound_max_work = 0;
+  /// Where the exact search gives up: n > 0, the tree is evaluated once more with each sub-ISM
+  /// passing up n results that are diverse in pose (the best first, none within 10 % of the
+  /// support radius and of the maximum angle deviation of a better one), so that a hypothesis
+  /// away from where a badly seen object pulls the best ones reaches the parent; the better of
+  /// both bests stands (both are instances of the input, so the answer can only rise). 0: off.
+  std::size_t diverse_results_passed_up = 32;
+  /// That second evaluation is abandoned (the first best stands) beyond this many
+  /// vote-to-hypothesis comparisons; votes are capped as in the exact search, so it adds at most
+  /// about as much time as the exact search may take.
+  std::size_t diverse_max_comparisons = 5000000;
   /// Every sub-ISM passes every result up (of results at one pose, the best): the exhaustive
   /// search, slow beyond small scenes; what the exact search is tested against.
   bool pass_every_result = false;
@@ -93,6 +103,11 @@ struct TreeRecognitionStats {
   /// short of the exhaustive search's, as the relaxed bound shows; infinity where it ran out too.
   double largest_possible_shortfall = 0.0;
   std::size_t relaxed_bound_work = 0;  // comparisons and votes of the relaxed bounds
+  /// Second evaluations with pose-diverse results where the exact search gave up (over
+  /// labellings), those whose best beat the first evaluation's, and their comparisons.
+  std::size_t diverse_evaluations = 0;
+  std::size_t diverse_evaluations_better = 0;
+  std::size_t diverse_comparisons = 0;
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
@@ -132,7 +147,16 @@ class TreeRecognizer {
   void evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>& evaluated,
                    const std::vector<Pose>& poses,
                    const std::vector<std::vector<int>>& estimates_of_object,
-                   asr_ism::IsmRecognitionStats& stats, ExactSearchBudget* budget = nullptr) const;
+                   asr_ism::IsmRecognitionStats& stats, ExactSearchBudget* budget = nullptr,
+                   std::size_t diverse = 0) const;
+  // Where the exact search gave up: evaluates the tree into `evaluated` with pose-diverse
+  // results passed up (TreeRecognitionParameters::diverse_results_passed_up). True if its root
+  // holds a result better than `first_best`.
+  bool evaluateDiversely(std::vector<EvaluatedIsm>& evaluated, double first_best,
+                         const std::vector<Pose>& poses,
+                         const std::vector<std::vector<int>>& estimates_of_object,
+                         std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
+                         TreeRecognitionStats* stats) const;
   // `with_repeats`: every estimate per object where `estimates_of_object` are the
   // representatives of repeated detections, nullptr where nothing was merged.
   TreeEvaluation evaluateIsms(const std::vector<Pose>& poses,
