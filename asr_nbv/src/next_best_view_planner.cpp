@@ -405,13 +405,15 @@ std::vector<std::size_t> fallingOrder(const std::vector<double>& values) {
   return order;
 }
 
+}  // namespace
+
 // A candidate waiting to be rated, in the order of the exhaustive search over bounds: falling
 // bound, then position, then its index at the position.
 // `key`: the candidate's orientation, or kLevelKey + l for a tilt level not yet expanded (so
 // the order does not depend on the order candidates were found in); `index`: the candidate's
 // among its position's.
 constexpr std::size_t kLevelKey = std::numeric_limits<std::size_t>::max() / 2;
-struct Queued {
+struct NextBestViewPlanner::Queued {
   double bound;
   std::size_t position, key, index;
   bool operator<(const Queued& other) const {  // "rated after" for std::priority_queue
@@ -420,9 +422,8 @@ struct Queued {
     return std::tie(position, key) > std::tie(other.position, other.key);
   }
   bool isLevel() const { return key >= kLevelKey; }
+  std::size_t level() const { return key - kLevelKey; }
 };
-
-}  // namespace
 
 NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
     const HypothesisSet& hypotheses, const HypothesisGroups& groups,
@@ -458,9 +459,10 @@ void NextBestViewPlanner::findUtilityMax(
     const HypothesisSet& hypotheses, StepState& state,
     const std::vector<std::vector<double>>& level_bound) const {
   // Occlusion only lowers utilities, so the first pass bounds them: best first, positions (by
-  // their bound, expanded a batch at a time) and their candidates (by the first pass's) from one
+  // their bound) and their candidates (by the first pass's, then without occlusion) from one
   // queue, until no bound exceeds the largest exact utility found; lines of sight are cast only
-  // for the candidates taken from it.
+  // for the candidates taken from it. The best few entries are worked on at a time, in parallel:
+  // the maximum does not depend on the order, so neither does the answer.
   const std::size_t count = level_bound.size();
   const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
   double& utility_max = state.utility_max;
@@ -469,35 +471,46 @@ void NextBestViewPlanner::findUtilityMax(
     for (std::size_t l = 0; !state.nearby[p].empty() && l < levels; ++l)
       if (const double total = levelTotal(level_bound[p], l, types); total > 0.0)
         best_first.push({total, p, kLevelKey + l, 0});
-  std::vector<std::pair<std::size_t, std::size_t>> batch;
+  // Candidates cost several positions' first pass each: fewer of them per batch.
+  const std::size_t most_candidates = pool_ != nullptr ? pool_->threadCount() : 1;
+  std::vector<Queued> batch;
+  std::vector<char> exact;  // per entry of the batch: a candidate's exact utility is wanted
   while (!best_first.empty() && best_first.top().bound > utility_max) {
-    if (!best_first.top().isLevel()) {
-      // A candidate: first by its utility without occlusion (no line of sight cast), then,
-      // if that still exceeds the best, exactly.
-      const Queued top = best_first.top();
+    batch.clear();
+    std::size_t candidates = 0;
+    while (batch.size() < batchSize() && candidates < most_candidates && !best_first.empty() &&
+           best_first.top().bound > utility_max) {
+      candidates += best_first.top().isLevel() ? 0 : 1;
+      batch.push_back(best_first.top());
       best_first.pop();
-      Candidate& candidate = state.candidates[top.position][top.index];
-      if (candidate.unoccluded_total < 0.0) {
-        if (unoccludedUtility(hypotheses, state, candidate) > utility_max)
-          best_first.push({candidate.unoccluded_total, top.position, top.key, top.index});
+    }
+    // A candidate taken for the first time gets its utility without occlusion (no line of
+    // sight cast) and waits again by it; taken again, its exact utility, unless the lines of
+    // sight show that it cannot exceed the maximum (it is then dropped).
+    exact.clear();
+    for (const Queued& item : batch)
+      exact.push_back(!item.isLevel() &&
+                      state.candidates[item.position][item.index].unoccluded_total >= 0.0);
+    work(hypotheses, state, batch, utility_max);
+    for (const Queued& item : batch)
+      if (!item.isLevel())
+        utility_max =
+            std::max(utility_max, state.candidates[item.position][item.index].exact_total);
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      const Queued& item = batch[i];
+      if (!item.isLevel()) {
+        const Candidate& candidate = state.candidates[item.position][item.index];
+        if (!exact[i] && candidate.unoccluded_total > utility_max)
+          best_first.push({candidate.unoccluded_total, item.position, item.key, item.index});
         continue;
       }
-      utility_max = std::max(utility_max, exactUtility(hypotheses, state, candidate));
-      continue;
-    }
-    batch.clear();
-    while (batch.size() < batchSize() && !best_first.empty() && best_first.top().isLevel() &&
-           best_first.top().bound > utility_max) {
-      batch.emplace_back(best_first.top().position, best_first.top().key - kLevelKey);
-      best_first.pop();
-    }
-    expand(hypotheses, state, batch);
-    for (const auto& [p, l] : batch)
-      for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
-        const Candidate& candidate = state.candidates[p][k];
-        if (orientations_.levelOf(candidate.orientation) == l && candidate.total > utility_max)
-          best_first.push({candidate.total, p, candidate.orientation, k});
+      for (std::size_t k = 0; k < state.candidates[item.position].size(); ++k) {
+        const Candidate& candidate = state.candidates[item.position][k];
+        if (orientations_.levelOf(candidate.orientation) == item.level() &&
+            candidate.total > utility_max)
+          best_first.push({candidate.total, item.position, candidate.orientation, k});
       }
+    }
   }
 }
 
@@ -523,7 +536,7 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
   }
   const std::vector<std::size_t> by_rating = fallingOrder(level_rating);
   std::priority_queue<Queued> queue;
-  std::vector<std::pair<std::size_t, std::size_t>> batch;
+  std::vector<Queued> batch;
   double best_rating = -1.0;
   std::size_t next = 0;
   for (;;) {
@@ -535,14 +548,16 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
       batch.clear();
       for (; next < by_rating.size() && batch.size() < batchSize() && wanted(by_rating[next]);
            ++next)
-        batch.emplace_back(by_rating[next] / levels, by_rating[next] % levels);
-      const std::vector<std::size_t> at = expand(hypotheses, state, batch);
+        batch.push_back({0.0, by_rating[next] / levels, kLevelKey + by_rating[next] % levels, 0});
+      const std::vector<std::size_t> at =
+          work(hypotheses, state, batch, -std::numeric_limits<double>::infinity());
       forEachPosition(at.size(), [&](std::size_t i) { boundCandidates(hypotheses, state, at[i]); });
-      for (const auto& [p, l] : batch)
-        for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
-          const Candidate& candidate = state.candidates[p][k];
-          if (orientations_.levelOf(candidate.orientation) == l && candidate.bound >= 0.0)
-            queue.push({candidate.bound, p, candidate.orientation, k});
+      for (const Queued& item : batch)
+        for (std::size_t k = 0; k < state.candidates[item.position].size(); ++k) {
+          const Candidate& candidate = state.candidates[item.position][k];
+          if (orientations_.levelOf(candidate.orientation) == item.level() &&
+              candidate.bound >= 0.0)
+            queue.push({candidate.bound, item.position, candidate.orientation, k});
         }
     }
     if (queue.empty() || queue.top().bound <= best_rating)
@@ -605,22 +620,39 @@ std::size_t NextBestViewPlanner::batchSize() const {
   return pool_ != nullptr ? 4 * pool_->threadCount() : 1;
 }
 
-std::vector<std::size_t> NextBestViewPlanner::expand(
-    const HypothesisSet& hypotheses, StepState& state,
-    const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const {
+std::vector<std::size_t> NextBestViewPlanner::work(const HypothesisSet& hypotheses,
+                                                   StepState& state,
+                                                   const std::vector<Queued>& batch,
+                                                   double floor) const {
   const std::size_t levels = orientations_.levels().size();
-  std::vector<std::size_t> at;           // the positions, each once
-  std::vector<std::vector<char>> masks;  // their levels to expand
-  for (const auto& [p, l] : wanted) {
+  std::vector<std::size_t> at;                       // the positions, each once
+  std::vector<std::vector<char>> masks;              // their levels to expand
+  std::vector<std::vector<std::size_t>> candidates;  // their candidates to evaluate
+  for (const Queued& item : batch) {
+    const std::size_t p = item.position;
     const std::size_t i = std::find(at.begin(), at.end(), p) - at.begin();
     if (i == at.size()) {
       at.push_back(p);
       masks.emplace_back(levels, 0);
+      candidates.emplace_back();
     }
-    masks[i][l] = !state.expanded[p * levels + l];
-    state.expanded[p * levels + l] = 1;
+    if (item.isLevel()) {
+      masks[i][item.level()] = !state.expanded[p * levels + item.level()];
+      state.expanded[p * levels + item.level()] = 1;
+    } else {
+      candidates[i].push_back(item.index);
+    }
   }
+  // One task per position: a position's candidates and lines of sight are its task's alone.
   forEachPosition(at.size(), [&](std::size_t i) {
+    for (std::size_t k : candidates[i]) {
+      Candidate& candidate = state.candidates[at[i]][k];
+      if (candidate.unoccluded_total < 0.0)
+        unoccludedUtility(hypotheses, state, candidate);
+      else
+        exactUtility(hypotheses, state, candidate, floor);
+    }
+    // Expanded after (the candidates are held by reference, the expansion appends).
     if (std::find(masks[i].begin(), masks[i].end(), 1) != masks[i].end())
       utilitiesAt(hypotheses, state.groups, state.nearby[at[i]], state.positions[at[i]], at[i],
                   masks[i], state.candidates[at[i]]);
@@ -644,7 +676,9 @@ double NextBestViewPlanner::unoccludedUtility(const HypothesisSet& hypotheses, S
 }
 
 double NextBestViewPlanner::exactUtility(const HypothesisSet& hypotheses, StepState& state,
-                                         Candidate& candidate) const {
+                                         Candidate& candidate, double floor) const {
+  // Covers the rounding of the sums: given up only where the exact utility is surely <= floor.
+  constexpr double kSlack = 1e-9;
   if (candidate.exact_total < 0.0) {
     unoccludedUtility(hypotheses, state, candidate);
     const std::size_t level = orientations_.levelOf(candidate.orientation);
@@ -658,13 +692,20 @@ double NextBestViewPlanner::exactUtility(const HypothesisSet& hypotheses, StepSt
     }
     const Eigen::Vector3d eye = cameraOf(candidate, state.positions).position;
     candidate.exact.assign(hypotheses.types().size(), 0.0);
+    const double give_up = floor - kSlack * candidate.unoccluded_total;
+    double occluded = 0.0;
     for (const SeenMember& member : candidate.seen) {
       const Hypothesis& hypothesis = hypotheses.hypotheses()[member.index];
       signed char& free = sight[member.slot];
       if (free < 0)
         free = map_.lineOfSight(eye, hypothesis.box) ? 1 : 0;
-      if (free == 1)
+      if (free == 1) {
         candidate.exact[hypothesis.type] += member.utility;
+      } else {
+        occluded += member.utility;
+        if (candidate.unoccluded_total - occluded <= give_up)
+          return -1.0;  // the lines of sight cast so far stay cast
+      }
     }
     candidate.exact_total = std::accumulate(candidate.exact.begin(), candidate.exact.end(), 0.0);
   }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -115,6 +116,7 @@ class NextBestViewPlanner {
   struct Candidate;
   struct Step;
   struct StepState;
+  struct Queued;
   Step rateStep(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                 const std::vector<Eigen::Vector2d>& positions,
                 const asr_robot_model::RobotState& current) const;
@@ -155,19 +157,22 @@ class NextBestViewPlanner {
   /// Positions expanded at a time: a few per thread (more are expanded than needed at the end,
   /// none twice).
   std::size_t batchSize() const;
-  /// The first pass (utilitiesAt) at each (position, tilt level) of `wanted` not expanded
-  /// yet, in parallel over the positions; the positions, each once.
-  std::vector<std::size_t> expand(
-      const HypothesisSet& hypotheses, StepState& state,
-      const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const;
+  /// The entries of `batch` worked on, in parallel over their positions: each (position, tilt
+  /// level) not expanded yet gets the first pass (utilitiesAt), each candidate its utility
+  /// without occlusion if not known yet, else its exact utility. The positions, each once.
+  /// exactUtility gives up below `floor`.
+  std::vector<std::size_t> work(const HypothesisSet& hypotheses, StepState& state,
+                                const std::vector<Queued>& batch, double floor) const;
   /// The candidate's utility without occlusion (computed once): the sum over the members it
   /// sees, >= its exact utility.
   double unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
                            Candidate& candidate) const;
   /// The candidate's utility per type with occlusion (computed once): lines of sight cast
-  /// from its camera position to the members it sees (once per position and tilt level).
-  double exactUtility(const HypothesisSet& hypotheses, StepState& state,
-                      Candidate& candidate) const;
+  /// from its camera position to the members it sees (once per position and tilt level). Gives
+  /// up (-1, nothing kept but the lines of sight) as soon as the hypotheses found occluded show
+  /// that it cannot exceed `floor`.
+  double exactUtility(const HypothesisSet& hypotheses, StepState& state, Candidate& candidate,
+                      double floor = -std::numeric_limits<double>::infinity()) const;
   /// >= the rating of any view from a camera at `camera` (floor) searching `choice`: motion
   /// free but for the base's least drive, utility as given.
   double ratingBound(const TypeChoice& choice, const Eigen::Vector2d& camera,
