@@ -193,10 +193,10 @@ class NextBestViewPlanner {
                    const std::vector<std::uint32_t>& nearby, const Eigen::Vector2d& position,
                    std::size_t position_index, const std::vector<char>& wanted,
                    std::vector<Candidate>& candidates) const;
-  /// >= orientationUtility of the member seen from the camera at `offset` from it
-  /// (`distance` its length), by table look-up.
+  /// >= orientationUtility of the member seen from a camera in the unit direction
+  /// `to_camera` from it, by table look-up.
   double orientationBound(const HypothesisGroups& groups, std::uint32_t member,
-                          const Eigen::Vector3d& offset, double distance) const;
+                          const Eigen::Vector3d& to_camera) const;
   /// False if no base position within camera_reach_ of the camera's floor point (sampled on
   /// its circle) is free: the camera cannot be carried there.
   bool reachable(const Eigen::Vector2d& camera) const;
