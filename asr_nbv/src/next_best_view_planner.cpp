@@ -179,17 +179,6 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
   camera_reach_ += 0.01;  // the pan samples' margin
 }
 
-double NextBestViewPlanner::orientationBound(const HypothesisGroups& groups, std::uint32_t member,
-                                             const Eigen::Vector3d& to_camera) const {
-  const std::uint32_t begin = groups.normalsBegin(member), end = groups.normalsBegin(member + 1);
-  if (begin == end)
-    return 1.0;  // recognisable from every side (only counting hypotheses are grouped)
-  double best = 0.0;
-  for (std::uint32_t n = begin; n < end; ++n)
-    best = std::max(best, orientation_bound_.ofCosine(groups.normal(n).dot(to_camera)));
-  return best;
-}
-
 bool NextBestViewPlanner::groupLevels(const HypothesisGroups::Group& group,
                                       const Eigen::Vector2d& position,
                                       std::vector<char>& passing) const {
@@ -225,15 +214,35 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   thread_local std::vector<double> utility;  // orientation x type
   thread_local std::vector<char> touched;
   std::vector<char> passing(levels.size());
-  utility.assign(orientations_.size() * type_count, 0.0);
-  touched.assign(orientations_.size(), 0);
+  // The wanted levels' orientations (each level's are consecutive).
+  std::size_t first = orientations_.size(), end = 0;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    if (wanted[l]) {
+      first = std::min(first, levels[l].first_orientation);
+      end = std::max(end, levels[l].first_orientation + levels[l].headings);
+    }
+  }
+  // Only they are written and read: only they are cleared.
+  utility.resize(orientations_.size() * type_count);
+  touched.resize(orientations_.size());
+  if (first < end) {
+    std::fill(utility.begin() + static_cast<long>(first * type_count),
+              utility.begin() + static_cast<long>(end * type_count), 0.0);
+    std::fill(touched.begin() + static_cast<long>(first), touched.begin() + static_cast<long>(end),
+              0);
+  }
   for (std::uint32_t g : nearby) {
     const HypothesisGroups::Group& group = groups.groups()[g];
     // Levels none of the group's members can be seen from are skipped for all of them.
     if (!groupLevels(group, position, passing))
       continue;
-    for (std::size_t l = 0; l < levels.size(); ++l)
+    bool any = false;
+    for (std::size_t l = 0; l < levels.size(); ++l) {
       passing[l] = passing[l] && wanted[l];
+      any = any || passing[l];
+    }
+    if (!any)
+      continue;
     double* const row = utility.data() + group.type;
     for (std::uint32_t m = group.begin; m < group.end; ++m) {
       const Eigen::Vector3d& point = groups.point(m);
@@ -285,7 +294,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
       }
     }
   }
-  for (std::size_t o = 0; o < orientations_.size(); ++o) {
+  for (std::size_t o = first; o < end; ++o) {
     if (!touched[o])
       continue;
     Candidate candidate;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <string>
@@ -196,7 +197,15 @@ class NextBestViewPlanner {
   /// >= orientationUtility of the member seen from a camera in the unit direction
   /// `to_camera` from it, by table look-up.
   double orientationBound(const HypothesisGroups& groups, std::uint32_t member,
-                          const Eigen::Vector3d& to_camera) const;
+                          const Eigen::Vector3d& to_camera) const {
+    const std::uint32_t begin = groups.normalsBegin(member), end = groups.normalsBegin(member + 1);
+    if (begin == end)
+      return 1.0;  // recognisable from every side (only counting hypotheses are grouped)
+    double best = 0.0;
+    for (std::uint32_t n = begin; n < end; ++n)
+      best = std::max(best, orientation_bound_.ofCosine(groups.normal(n).dot(to_camera)));
+    return best;
+  }
   /// False if no base position within camera_reach_ of the camera's floor point (sampled on
   /// its circle) is free: the camera cannot be carried there.
   bool reachable(const Eigen::Vector2d& camera) const;
