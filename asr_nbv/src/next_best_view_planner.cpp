@@ -522,7 +522,7 @@ void NextBestViewPlanner::findUtilityMax(
     for (const Queued& item : batch)
       exact.push_back(!item.isLevel() &&
                       state.candidates[item.position][item.index].unoccluded_total >= 0.0);
-    work(hypotheses, state, batch, utility_max);
+    work(hypotheses, state, batch, utility_max, false);
     for (const Queued& item : batch)
       if (!item.isLevel())
         utility_max =
@@ -580,9 +580,7 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
       for (; next < by_rating.size() && batch.size() < batchSize() && wanted(by_rating[next]);
            ++next)
         batch.push_back({0.0, by_rating[next] / levels, kLevelKey + by_rating[next] % levels, 0});
-      const std::vector<std::size_t> at =
-          work(hypotheses, state, batch, -std::numeric_limits<double>::infinity());
-      forEachPosition(at.size(), [&](std::size_t i) { boundCandidates(hypotheses, state, at[i]); });
+      work(hypotheses, state, batch, -std::numeric_limits<double>::infinity(), true);
       for (const Queued& item : batch)
         for (std::size_t k = 0; k < state.candidates[item.position].size(); ++k) {
           const Candidate& candidate = state.candidates[item.position][k];
@@ -651,10 +649,9 @@ std::size_t NextBestViewPlanner::batchSize() const {
   return pool_ != nullptr ? 4 * pool_->threadCount() : 1;
 }
 
-std::vector<std::size_t> NextBestViewPlanner::work(const HypothesisSet& hypotheses,
-                                                   StepState& state,
-                                                   const std::vector<Queued>& batch,
-                                                   double floor) const {
+void NextBestViewPlanner::work(const HypothesisSet& hypotheses, StepState& state,
+                               const std::vector<Queued>& batch, double floor,
+                               bool bound_candidates) const {
   const std::size_t levels = orientations_.levels().size();
   std::vector<std::size_t> at;                       // the positions, each once
   std::vector<std::vector<char>> masks;              // their levels to expand
@@ -687,8 +684,9 @@ std::vector<std::size_t> NextBestViewPlanner::work(const HypothesisSet& hypothes
     if (std::find(masks[i].begin(), masks[i].end(), 1) != masks[i].end())
       utilitiesAt(hypotheses, state.groups, state.nearby[at[i]], state.positions[at[i]], at[i],
                   masks[i], state.candidates[at[i]]);
+    if (bound_candidates)
+      boundCandidates(hypotheses, state, at[i]);
   });
-  return at;
 }
 
 double NextBestViewPlanner::unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,

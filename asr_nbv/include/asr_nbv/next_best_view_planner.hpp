@@ -155,15 +155,16 @@ class NextBestViewPlanner {
                       const asr_robot_model::RobotState& current) const;
   /// task(0 .. count - 1), on the pool if there is one.
   void forEachPosition(std::size_t count, const std::function<void(std::size_t)>& task) const;
-  /// Positions expanded at a time: a few per thread (more are expanded than needed at the end,
-  /// none twice).
+  /// Queue entries worked on at a time: a few per thread (more are expanded than needed at the
+  /// end, none twice).
   std::size_t batchSize() const;
   /// The entries of `batch` worked on, in parallel over their positions: each (position, tilt
   /// level) not expanded yet gets the first pass (utilitiesAt), each candidate its utility
-  /// without occlusion if not known yet, else its exact utility. The positions, each once.
-  /// exactUtility gives up below `floor`.
-  std::vector<std::size_t> work(const HypothesisSet& hypotheses, StepState& state,
-                                const std::vector<Queued>& batch, double floor) const;
+  /// without occlusion if not known yet, else its exact utility (which gives up below `floor`);
+  /// then, if `bound_candidates`, the positions' candidates their rating bounds
+  /// (boundCandidates), in the same task.
+  void work(const HypothesisSet& hypotheses, StepState& state, const std::vector<Queued>& batch,
+            double floor, bool bound_candidates) const;
   /// The candidate's utility without occlusion (computed once): the sum over the members it
   /// sees, >= its exact utility.
   double unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
