@@ -555,7 +555,7 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
   const std::size_t count = positions.size();
   const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
   std::vector<double> level_rating(count * levels, -1.0);  // position x level
-  for (std::size_t p = 0; p < count; ++p) {
+  forEachPosition(count, [&](std::size_t p) {
     for (std::size_t l = 0; l < levels && !state.nearby[p].empty(); ++l) {
       const double total = levelTotal(level_bound[p], l, types);
       if (total > 0.0 && !(state.worth_moving && total <= parameters_.min_utility_for_moving))
@@ -564,7 +564,7 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
                                        state.type_count, parameters_.weights),
                         positions[p], state);
     }
-  }
+  });
   const std::vector<std::size_t> by_rating = fallingOrder(level_rating);
   std::priority_queue<Queued> queue;
   std::vector<Queued> batch;
