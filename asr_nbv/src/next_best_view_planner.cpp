@@ -95,6 +95,24 @@ long floorToLong(double x) {
   return x < static_cast<double>(truncated) ? truncated - 1 : truncated;
 }
 
+// atan2(y, x) within kAzimuthError radians (a polynomial of the octant's arc tangent, off by at
+// most 2.1e-4 rad where sampled densely): the heading windows are widened by that margin, so they
+// still hold every heading within the side angle, and the depth test rejects the few more.
+constexpr double kAzimuthError = 1e-3;
+double approximateAtan2(double y, double x) {
+  const double ax = std::abs(x), ay = std::abs(y);
+  const double largest = std::max(ax, ay);
+  if (largest == 0.0)
+    return 0.0;
+  const double a = std::min(ax, ay) / largest, s = a * a;
+  double angle = ((-0.0464964749 * s + 0.15931422) * s - 0.327622764) * s * a + a;
+  if (ay > ax)
+    angle = M_PI / 2.0 - angle;
+  if (x < 0.0)
+    angle = M_PI - angle;
+  return y < 0.0 ? -angle : angle;
+}
+
 // Headings of a level whose axis lies within an angle (its cosine `cosine`) of a direction
 // with this elevation (its sine and cosine) and azimuth: [first, first + count) modulo the
 // level's headings. From cos(angle) = sin e1 sin e2 + cos e1 cos e2 cos(azimuth difference).
@@ -110,7 +128,7 @@ std::pair<long, long> headingWindow(const TiltLevel& level, double level_sine, d
     return {0, 0};
   if (q <= -1.0)
     return {0, all};
-  const double spread = arcCosineUpperBound(q) / level.heading_step;
+  const double spread = (arcCosineUpperBound(q) + kAzimuthError) / level.heading_step;
   const double centre = (azimuth - level.first_heading) / level.heading_step;
   const long first = floorToLong(centre - spread);
   const long last = -floorToLong(-(centre + spread));  // the ceiling
@@ -161,19 +179,6 @@ NextBestViewPlanner::NextBestViewPlanner(const asr_robot_model::RobotDescription
   camera_reach_ += 0.01;  // the pan samples' margin
 }
 
-double NextBestViewPlanner::orientationBound(const HypothesisGroups& groups, std::uint32_t member,
-                                             const Eigen::Vector3d& offset, double distance) const {
-  const std::uint32_t begin = groups.normalsBegin(member), end = groups.normalsBegin(member + 1);
-  if (begin == end)
-    return 1.0;  // recognisable from every side (only counting hypotheses are grouped)
-  // The camera is at -offset from the hypothesis.
-  const Eigen::Vector3d to_camera = -offset / distance;
-  double best = 0.0;
-  for (std::uint32_t n = begin; n < end; ++n)
-    best = std::max(best, orientation_bound_.ofCosine(groups.normal(n).dot(to_camera)));
-  return best;
-}
-
 bool NextBestViewPlanner::groupLevels(const HypothesisGroups::Group& group,
                                       const Eigen::Vector2d& position,
                                       std::vector<char>& passing) const {
@@ -209,20 +214,41 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
   thread_local std::vector<double> utility;  // orientation x type
   thread_local std::vector<char> touched;
   std::vector<char> passing(levels.size());
-  utility.assign(orientations_.size() * type_count, 0.0);
-  touched.assign(orientations_.size(), 0);
+  // The wanted levels' orientations (each level's are consecutive).
+  std::size_t first = orientations_.size(), end = 0;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    if (wanted[l]) {
+      first = std::min(first, levels[l].first_orientation);
+      end = std::max(end, levels[l].first_orientation + levels[l].headings);
+    }
+  }
+  // Only they are written and read: only they are cleared.
+  utility.resize(orientations_.size() * type_count);
+  touched.resize(orientations_.size());
+  if (first < end) {
+    std::fill(utility.begin() + static_cast<long>(first * type_count),
+              utility.begin() + static_cast<long>(end * type_count), 0.0);
+    std::fill(touched.begin() + static_cast<long>(first), touched.begin() + static_cast<long>(end),
+              0);
+  }
   for (std::uint32_t g : nearby) {
     const HypothesisGroups::Group& group = groups.groups()[g];
     // Levels none of the group's members can be seen from are skipped for all of them.
     if (!groupLevels(group, position, passing))
       continue;
-    for (std::size_t l = 0; l < levels.size(); ++l)
+    bool any = false;
+    for (std::size_t l = 0; l < levels.size(); ++l) {
       passing[l] = passing[l] && wanted[l];
+      any = any || passing[l];
+    }
+    if (!any)
+      continue;
     double* const row = utility.data() + group.type;
     for (std::uint32_t m = group.begin; m < group.end; ++m) {
       const Eigen::Vector3d& point = groups.point(m);
       const Eigen::Vector2d across = point.head<2>() - position;
-      const double horizontal = across.norm();
+      const double horizontal_squared = across.squaredNorm();
+      const double horizontal = std::sqrt(horizontal_squared);
       double azimuth = std::numeric_limits<double>::quiet_NaN();  // when a level needs it
       for (std::size_t l = 0; l < levels.size(); ++l) {
         if (!passing[l])
@@ -234,15 +260,15 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
         if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
           continue;
         const Eigen::Vector3d offset(across.x(), across.y(), rise);
-        const double distance = offset.norm();
+        const double distance = std::sqrt(horizontal_squared + rise * rise);
         if (distance <= near || distance >= reach_)
           continue;
-        const double orientation = orientationBound(groups, m, offset, distance);
+        const double inverse_distance = 1.0 / distance;
+        const double orientation = orientationBound(groups, m, -inverse_distance * offset);
         if (orientation == 0.0)
           continue;
         if (std::isnan(azimuth))
-          azimuth = std::atan2(across.y(), across.x());
-        const double inverse_distance = 1.0 / distance;
+          azimuth = approximateAtan2(across.y(), across.x());
         const auto [first, count] =
             headingWindow(level, level_sine_[l], level_cosine_[l], rise * inverse_distance,
                           horizontal * inverse_distance, azimuth, side_cosine_);
@@ -268,7 +294,7 @@ void NextBestViewPlanner::utilitiesAt(const HypothesisSet& hypotheses,
       }
     }
   }
-  for (std::size_t o = 0; o < orientations_.size(); ++o) {
+  for (std::size_t o = first; o < end; ++o) {
     if (!touched[o])
       continue;
     Candidate candidate;
@@ -349,9 +375,12 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
     const HypothesisGroups::Group& group = groups.groups()[g];
     if (!groupLevels(group, position, passing))
       continue;
+    double* const row = per_level_type.data() + group.type;
     for (std::uint32_t m = group.begin; m < group.end; ++m) {
       const Eigen::Vector3d& point = groups.point(m);
-      const double horizontal = (point.head<2>() - position).norm();
+      const Eigen::Vector2d across = point.head<2>() - position;
+      const double horizontal_squared = across.squaredNorm();
+      const double horizontal = std::sqrt(horizontal_squared);
       for (std::size_t l = 0; l < levels.size(); ++l) {
         if (!passing[l])
           continue;
@@ -359,24 +388,26 @@ void NextBestViewPlanner::positionBound(const HypothesisSet& hypotheses,
         const double rise = point.z() - levels[l].camera_height;
         if (rise <= horizontal * band_low_[l] || rise >= horizontal * band_high_[l])
           continue;
-        const Eigen::Vector3d offset =
-            point - Eigen::Vector3d(position.x(), position.y(), levels[l].camera_height);
-        const double distance = offset.norm();
+        const double distance = std::sqrt(horizontal_squared + rise * rise);
         if (distance <= near || distance >= reach_)
           continue;
         // Every axis of the level is at least the elevation difference away from the
         // hypothesis, whatever its heading: that bounds the side term, and the depth
         // (distance x the cosine of that angle) from above.
-        const double cosine =
-            std::min(1.0, (level_cosine_[l] * horizontal + level_sine_[l] * rise) / distance +
-                              kCosineMargin);
+        const double inverse_distance = 1.0 / distance;
+        const double cosine = std::min(
+            1.0, (level_cosine_[l] * horizontal + level_sine_[l] * rise) * inverse_distance +
+                     kCosineMargin);
         const double low = side_cosine_ * distance, high = cosine * distance;
         const double gap = middle_ < low ? low - middle_ : std::max(0.0, middle_ - high);
         const double terms =
             side_bound_.ofCosine(cosine) * proximity_bound_.ofDistance(std::max(0.0, gap - 1e-9));
         if (terms > 0.0)
-          per_level_type[l * type_count + group.type] +=
-              kMargin * orientationBound(groups, m, offset, distance) * terms;
+          row[l * type_count] +=
+              kMargin *
+              orientationBound(groups, m,
+                               -inverse_distance * Eigen::Vector3d(across.x(), across.y(), rise)) *
+              terms;
       }
     }
   }
@@ -405,13 +436,15 @@ std::vector<std::size_t> fallingOrder(const std::vector<double>& values) {
   return order;
 }
 
+}  // namespace
+
 // A candidate waiting to be rated, in the order of the exhaustive search over bounds: falling
 // bound, then position, then its index at the position.
 // `key`: the candidate's orientation, or kLevelKey + l for a tilt level not yet expanded (so
 // the order does not depend on the order candidates were found in); `index`: the candidate's
 // among its position's.
 constexpr std::size_t kLevelKey = std::numeric_limits<std::size_t>::max() / 2;
-struct Queued {
+struct NextBestViewPlanner::Queued {
   double bound;
   std::size_t position, key, index;
   bool operator<(const Queued& other) const {  // "rated after" for std::priority_queue
@@ -420,9 +453,8 @@ struct Queued {
     return std::tie(position, key) > std::tie(other.position, other.key);
   }
   bool isLevel() const { return key >= kLevelKey; }
+  std::size_t level() const { return key - kLevelKey; }
 };
-
-}  // namespace
 
 NextBestViewPlanner::Step NextBestViewPlanner::rateStep(
     const HypothesisSet& hypotheses, const HypothesisGroups& groups,
@@ -458,9 +490,10 @@ void NextBestViewPlanner::findUtilityMax(
     const HypothesisSet& hypotheses, StepState& state,
     const std::vector<std::vector<double>>& level_bound) const {
   // Occlusion only lowers utilities, so the first pass bounds them: best first, positions (by
-  // their bound, expanded a batch at a time) and their candidates (by the first pass's) from one
+  // their bound) and their candidates (by the first pass's, then without occlusion) from one
   // queue, until no bound exceeds the largest exact utility found; lines of sight are cast only
-  // for the candidates taken from it.
+  // for the candidates taken from it. The best few entries are worked on at a time, in parallel:
+  // the maximum does not depend on the order, so neither does the answer.
   const std::size_t count = level_bound.size();
   const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
   double& utility_max = state.utility_max;
@@ -469,35 +502,46 @@ void NextBestViewPlanner::findUtilityMax(
     for (std::size_t l = 0; !state.nearby[p].empty() && l < levels; ++l)
       if (const double total = levelTotal(level_bound[p], l, types); total > 0.0)
         best_first.push({total, p, kLevelKey + l, 0});
-  std::vector<std::pair<std::size_t, std::size_t>> batch;
+  // Candidates cost several positions' first pass each: fewer of them per batch.
+  const std::size_t most_candidates = pool_ != nullptr ? pool_->threadCount() : 1;
+  std::vector<Queued> batch;
+  std::vector<char> exact;  // per entry of the batch: a candidate's exact utility is wanted
   while (!best_first.empty() && best_first.top().bound > utility_max) {
-    if (!best_first.top().isLevel()) {
-      // A candidate: first by its utility without occlusion (no line of sight cast), then,
-      // if that still exceeds the best, exactly.
-      const Queued top = best_first.top();
+    batch.clear();
+    std::size_t candidates = 0;
+    while (batch.size() < batchSize() && candidates < most_candidates && !best_first.empty() &&
+           best_first.top().bound > utility_max) {
+      candidates += best_first.top().isLevel() ? 0 : 1;
+      batch.push_back(best_first.top());
       best_first.pop();
-      Candidate& candidate = state.candidates[top.position][top.index];
-      if (candidate.unoccluded_total < 0.0) {
-        if (unoccludedUtility(hypotheses, state, candidate) > utility_max)
-          best_first.push({candidate.unoccluded_total, top.position, top.key, top.index});
+    }
+    // A candidate taken for the first time gets its utility without occlusion (no line of
+    // sight cast) and waits again by it; taken again, its exact utility, unless the lines of
+    // sight show that it cannot exceed the maximum (it is then dropped).
+    exact.clear();
+    for (const Queued& item : batch)
+      exact.push_back(!item.isLevel() &&
+                      state.candidates[item.position][item.index].unoccluded_total >= 0.0);
+    work(hypotheses, state, batch, utility_max, false);
+    for (const Queued& item : batch)
+      if (!item.isLevel())
+        utility_max =
+            std::max(utility_max, state.candidates[item.position][item.index].exact_total);
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      const Queued& item = batch[i];
+      if (!item.isLevel()) {
+        const Candidate& candidate = state.candidates[item.position][item.index];
+        if (!exact[i] && candidate.unoccluded_total > utility_max)
+          best_first.push({candidate.unoccluded_total, item.position, item.key, item.index});
         continue;
       }
-      utility_max = std::max(utility_max, exactUtility(hypotheses, state, candidate));
-      continue;
-    }
-    batch.clear();
-    while (batch.size() < batchSize() && !best_first.empty() && best_first.top().isLevel() &&
-           best_first.top().bound > utility_max) {
-      batch.emplace_back(best_first.top().position, best_first.top().key - kLevelKey);
-      best_first.pop();
-    }
-    expand(hypotheses, state, batch);
-    for (const auto& [p, l] : batch)
-      for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
-        const Candidate& candidate = state.candidates[p][k];
-        if (orientations_.levelOf(candidate.orientation) == l && candidate.total > utility_max)
-          best_first.push({candidate.total, p, candidate.orientation, k});
+      for (std::size_t k = 0; k < state.candidates[item.position].size(); ++k) {
+        const Candidate& candidate = state.candidates[item.position][k];
+        if (orientations_.levelOf(candidate.orientation) == item.level() &&
+            candidate.total > utility_max)
+          best_first.push({candidate.total, item.position, candidate.orientation, k});
       }
+    }
   }
 }
 
@@ -511,7 +555,7 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
   const std::size_t count = positions.size();
   const std::size_t levels = orientations_.levels().size(), types = hypotheses.types().size();
   std::vector<double> level_rating(count * levels, -1.0);  // position x level
-  for (std::size_t p = 0; p < count; ++p) {
+  forEachPosition(count, [&](std::size_t p) {
     for (std::size_t l = 0; l < levels && !state.nearby[p].empty(); ++l) {
       const double total = levelTotal(level_bound[p], l, types);
       if (total > 0.0 && !(state.worth_moving && total <= parameters_.min_utility_for_moving))
@@ -520,10 +564,10 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
                                        state.type_count, parameters_.weights),
                         positions[p], state);
     }
-  }
+  });
   const std::vector<std::size_t> by_rating = fallingOrder(level_rating);
   std::priority_queue<Queued> queue;
-  std::vector<std::pair<std::size_t, std::size_t>> batch;
+  std::vector<Queued> batch;
   double best_rating = -1.0;
   std::size_t next = 0;
   for (;;) {
@@ -535,14 +579,14 @@ void NextBestViewPlanner::rateBestFirst(const HypothesisSet& hypotheses, StepSta
       batch.clear();
       for (; next < by_rating.size() && batch.size() < batchSize() && wanted(by_rating[next]);
            ++next)
-        batch.emplace_back(by_rating[next] / levels, by_rating[next] % levels);
-      const std::vector<std::size_t> at = expand(hypotheses, state, batch);
-      forEachPosition(at.size(), [&](std::size_t i) { boundCandidates(hypotheses, state, at[i]); });
-      for (const auto& [p, l] : batch)
-        for (std::size_t k = 0; k < state.candidates[p].size(); ++k) {
-          const Candidate& candidate = state.candidates[p][k];
-          if (orientations_.levelOf(candidate.orientation) == l && candidate.bound >= 0.0)
-            queue.push({candidate.bound, p, candidate.orientation, k});
+        batch.push_back({0.0, by_rating[next] / levels, kLevelKey + by_rating[next] % levels, 0});
+      work(hypotheses, state, batch, -std::numeric_limits<double>::infinity(), true);
+      for (const Queued& item : batch)
+        for (std::size_t k = 0; k < state.candidates[item.position].size(); ++k) {
+          const Candidate& candidate = state.candidates[item.position][k];
+          if (orientations_.levelOf(candidate.orientation) == item.level() &&
+              candidate.bound >= 0.0)
+            queue.push({candidate.bound, item.position, candidate.orientation, k});
         }
     }
     if (queue.empty() || queue.top().bound <= best_rating)
@@ -605,27 +649,44 @@ std::size_t NextBestViewPlanner::batchSize() const {
   return pool_ != nullptr ? 4 * pool_->threadCount() : 1;
 }
 
-std::vector<std::size_t> NextBestViewPlanner::expand(
-    const HypothesisSet& hypotheses, StepState& state,
-    const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const {
+void NextBestViewPlanner::work(const HypothesisSet& hypotheses, StepState& state,
+                               const std::vector<Queued>& batch, double floor,
+                               bool bound_candidates) const {
   const std::size_t levels = orientations_.levels().size();
-  std::vector<std::size_t> at;           // the positions, each once
-  std::vector<std::vector<char>> masks;  // their levels to expand
-  for (const auto& [p, l] : wanted) {
+  std::vector<std::size_t> at;                       // the positions, each once
+  std::vector<std::vector<char>> masks;              // their levels to expand
+  std::vector<std::vector<std::size_t>> candidates;  // their candidates to evaluate
+  for (const Queued& item : batch) {
+    const std::size_t p = item.position;
     const std::size_t i = std::find(at.begin(), at.end(), p) - at.begin();
     if (i == at.size()) {
       at.push_back(p);
       masks.emplace_back(levels, 0);
+      candidates.emplace_back();
     }
-    masks[i][l] = !state.expanded[p * levels + l];
-    state.expanded[p * levels + l] = 1;
+    if (item.isLevel()) {
+      masks[i][item.level()] = !state.expanded[p * levels + item.level()];
+      state.expanded[p * levels + item.level()] = 1;
+    } else {
+      candidates[i].push_back(item.index);
+    }
   }
+  // One task per position: a position's candidates and lines of sight are its task's alone.
   forEachPosition(at.size(), [&](std::size_t i) {
+    for (std::size_t k : candidates[i]) {
+      Candidate& candidate = state.candidates[at[i]][k];
+      if (candidate.unoccluded_total < 0.0)
+        unoccludedUtility(hypotheses, state, candidate);
+      else
+        exactUtility(hypotheses, state, candidate, floor);
+    }
+    // Expanded after (the candidates are held by reference, the expansion appends).
     if (std::find(masks[i].begin(), masks[i].end(), 1) != masks[i].end())
       utilitiesAt(hypotheses, state.groups, state.nearby[at[i]], state.positions[at[i]], at[i],
                   masks[i], state.candidates[at[i]]);
+    if (bound_candidates)
+      boundCandidates(hypotheses, state, at[i]);
   });
-  return at;
 }
 
 double NextBestViewPlanner::unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
@@ -644,7 +705,9 @@ double NextBestViewPlanner::unoccludedUtility(const HypothesisSet& hypotheses, S
 }
 
 double NextBestViewPlanner::exactUtility(const HypothesisSet& hypotheses, StepState& state,
-                                         Candidate& candidate) const {
+                                         Candidate& candidate, double floor) const {
+  // Covers the rounding of the sums: given up only where the exact utility is surely <= floor.
+  constexpr double kSlack = 1e-9;
   if (candidate.exact_total < 0.0) {
     unoccludedUtility(hypotheses, state, candidate);
     const std::size_t level = orientations_.levelOf(candidate.orientation);
@@ -658,13 +721,20 @@ double NextBestViewPlanner::exactUtility(const HypothesisSet& hypotheses, StepSt
     }
     const Eigen::Vector3d eye = cameraOf(candidate, state.positions).position;
     candidate.exact.assign(hypotheses.types().size(), 0.0);
+    const double give_up = floor - kSlack * candidate.unoccluded_total;
+    double occluded = 0.0;
     for (const SeenMember& member : candidate.seen) {
       const Hypothesis& hypothesis = hypotheses.hypotheses()[member.index];
       signed char& free = sight[member.slot];
       if (free < 0)
         free = map_.lineOfSight(eye, hypothesis.box) ? 1 : 0;
-      if (free == 1)
+      if (free == 1) {
         candidate.exact[hypothesis.type] += member.utility;
+      } else {
+        occluded += member.utility;
+        if (candidate.unoccluded_total - occluded <= give_up)
+          return -1.0;  // the lines of sight cast so far stay cast
+      }
     }
     candidate.exact_total = std::accumulate(candidate.exact.begin(), candidate.exact.end(), 0.0);
   }

@@ -3,6 +3,7 @@
 #include <octomap/OcTree.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "asr_common/input_error.hpp"
@@ -13,7 +14,59 @@ struct WorldMap::Octree {
   explicit Octree(double resolution) : tree(resolution) {}
   octomap::OcTree tree;
   std::vector<Box> solids;  // the boxes whose surfaces the tree holds
+  // The tree's occupied voxels as a grid of the finest keys over their bounding box, so a ray
+  // cast looks each voxel up instead of descending the tree (empty if it would be too large).
+  octomap::OcTreeKey low;
+  std::array<long, 3> extent{0, 0, 0};
+  std::vector<bool> occupied;  // x fastest
+
+  void gridOccupied();
+  // tree.search(key) is an occupied node, by the grid.
+  bool occupiedAt(const octomap::OcTreeKey& key) const {
+    const long x = static_cast<long>(key[0]) - low[0], y = static_cast<long>(key[1]) - low[1],
+               z = static_cast<long>(key[2]) - low[2];
+    if (x < 0 || y < 0 || z < 0 || x >= extent[0] || y >= extent[1] || z >= extent[2])
+      return false;
+    return occupied[static_cast<std::size_t>((z * extent[1] + y) * extent[0] + x)];
+  }
 };
+
+void WorldMap::Octree::gridOccupied() {
+  // Up to 2^26 cells (8 MB): every world of the suite at its resolutions fits.
+  constexpr double kMostCells = 67108864.0;
+  std::array<long, 3> first{65536, 65536, 65536}, last{-1, -1, -1};
+  const unsigned depth = tree.getTreeDepth();
+  for (auto leaf = tree.begin_leafs(), end = tree.end_leafs(); leaf != end; ++leaf) {
+    if (!tree.isNodeOccupied(*leaf))
+      continue;
+    const octomap::OcTreeKey key = leaf.getIndexKey();
+    const long span = 1L << (depth - leaf.getDepth());
+    for (int axis = 0; axis < 3; ++axis) {
+      first[axis] = std::min<long>(first[axis], key[axis]);
+      last[axis] = std::max<long>(last[axis], key[axis] + span - 1);
+    }
+  }
+  if (last[0] < 0 || static_cast<double>(last[0] - first[0] + 1) *
+                             static_cast<double>(last[1] - first[1] + 1) *
+                             static_cast<double>(last[2] - first[2] + 1) >
+                         kMostCells)
+    return;
+  for (int axis = 0; axis < 3; ++axis) {
+    low[axis] = static_cast<octomap::key_type>(first[axis]);
+    extent[axis] = last[axis] - first[axis] + 1;
+  }
+  occupied.assign(static_cast<std::size_t>(extent[0] * extent[1] * extent[2]), false);
+  for (auto leaf = tree.begin_leafs(), end = tree.end_leafs(); leaf != end; ++leaf) {
+    if (!tree.isNodeOccupied(*leaf))
+      continue;
+    const octomap::OcTreeKey key = leaf.getIndexKey();
+    const long span = 1L << (depth - leaf.getDepth());
+    for (long z = key[2] - first[2]; z < key[2] - first[2] + span; ++z)
+      for (long y = key[1] - first[1]; y < key[1] - first[1] + span; ++y)
+        for (long x = key[0] - first[0]; x < key[0] - first[0] + span; ++x)
+          occupied[static_cast<std::size_t>((z * extent[1] + y) * extent[0] + x)] = true;
+  }
+}
 
 namespace {
 
@@ -44,6 +97,25 @@ void insertBoxSurface(octomap::OcTree& tree, const Box& box) {
       }
     }
   }
+}
+
+// The ray cast of WorldMap::lineOfSight: the voxels the segment from `eye` to the target's
+// centre crosses, blocked by any `occupied` one but the target's own.
+template <typename Occupied>
+bool rayIsFree(const octomap::OcTree& tree, const Eigen::Vector3d& eye, const Box& target,
+               const Occupied& occupied) {
+  const double own_margin = tree.getResolution() * std::sqrt(3.0) / 2.0;
+  octomap::KeyRay ray;
+  if (!tree.computeRayKeys(toPoint(eye), toPoint(target.pose.position), ray))
+    return false;
+  for (const octomap::OcTreeKey& key : ray) {
+    if (!occupied(key))
+      continue;
+    const octomap::point3d centre = tree.keyToCoord(key);
+    if (!target.contains(Eigen::Vector3d(centre.x(), centre.y(), centre.z()), own_margin))
+      return false;
+  }
+  return true;
 }
 
 // True if the segment from a to b comes within `margin` of the box (slab test in its frame).
@@ -91,6 +163,7 @@ WorldMap::WorldMap(const World& world, double resolution, double base_radius, do
   for (const Box& box : octree_->solids)
     insertBoxSurface(octree_->tree, box);
   octree_->tree.updateInnerOccupancy();
+  octree_->gridOccupied();
   computeBaseFootprintGrid();
 }
 
@@ -158,7 +231,6 @@ bool WorldMap::baseIsFree(double x, double y) const {
 
 bool WorldMap::lineOfSight(const Eigen::Vector3d& eye, const Box& target) const {
   const octomap::OcTree& tree = octree_->tree;
-  const double own_margin = tree.getResolution() * std::sqrt(3.0) / 2.0;
   // Every occupied voxel meets a box's surface, and the ray passes through the voxels it
   // crosses: a segment farther than a voxel's diagonal from every box crosses none, and the
   // ray cast is skipped (same answer, a fraction of the time).
@@ -171,24 +243,18 @@ bool WorldMap::lineOfSight(const Eigen::Vector3d& eye, const Box& target) const 
         return segmentNearBox(eye, target.pose.position, box, clearance);
       }))
     return true;
-  return lineOfSightByRayCast(eye, target);
+  if (octree_->occupied.empty())
+    return lineOfSightByRayCast(eye, target);
+  return rayIsFree(tree, eye, target,
+                   [this](const octomap::OcTreeKey& key) { return octree_->occupiedAt(key); });
 }
 
 bool WorldMap::lineOfSightByRayCast(const Eigen::Vector3d& eye, const Box& target) const {
   const octomap::OcTree& tree = octree_->tree;
-  const double own_margin = tree.getResolution() * std::sqrt(3.0) / 2.0;
-  octomap::KeyRay ray;
-  if (!tree.computeRayKeys(toPoint(eye), toPoint(target.pose.position), ray))
-    return false;
-  for (const octomap::OcTreeKey& key : ray) {
+  return rayIsFree(tree, eye, target, [&tree](const octomap::OcTreeKey& key) {
     const octomap::OcTreeNode* node = tree.search(key);
-    if (node == nullptr || !tree.isNodeOccupied(node))
-      continue;
-    const octomap::point3d centre = tree.keyToCoord(key);
-    if (!target.contains(Eigen::Vector3d(centre.x(), centre.y(), centre.z()), own_margin))
-      return false;
-  }
-  return true;
+    return node != nullptr && tree.isNodeOccupied(node);
+  });
 }
 
 std::vector<Eigen::Vector3d> WorldMap::occupiedVoxels() const {

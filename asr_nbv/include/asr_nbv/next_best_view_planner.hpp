@@ -1,6 +1,8 @@
 #pragma once
 
+#include <algorithm>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -115,6 +117,7 @@ class NextBestViewPlanner {
   struct Candidate;
   struct Step;
   struct StepState;
+  struct Queued;
   Step rateStep(const HypothesisSet& hypotheses, const HypothesisGroups& groups,
                 const std::vector<Eigen::Vector2d>& positions,
                 const asr_robot_model::RobotState& current) const;
@@ -152,22 +155,26 @@ class NextBestViewPlanner {
                       const asr_robot_model::RobotState& current) const;
   /// task(0 .. count - 1), on the pool if there is one.
   void forEachPosition(std::size_t count, const std::function<void(std::size_t)>& task) const;
-  /// Positions expanded at a time: a few per thread (more are expanded than needed at the end,
-  /// none twice).
+  /// Queue entries worked on at a time: a few per thread (more are expanded than needed at the
+  /// end, none twice).
   std::size_t batchSize() const;
-  /// The first pass (utilitiesAt) at each (position, tilt level) of `wanted` not expanded
-  /// yet, in parallel over the positions; the positions, each once.
-  std::vector<std::size_t> expand(
-      const HypothesisSet& hypotheses, StepState& state,
-      const std::vector<std::pair<std::size_t, std::size_t>>& wanted) const;
+  /// The entries of `batch` worked on, in parallel over their positions: each (position, tilt
+  /// level) not expanded yet gets the first pass (utilitiesAt), each candidate its utility
+  /// without occlusion if not known yet, else its exact utility (which gives up below `floor`);
+  /// then, if `bound_candidates`, the positions' candidates their rating bounds
+  /// (boundCandidates), in the same task.
+  void work(const HypothesisSet& hypotheses, StepState& state, const std::vector<Queued>& batch,
+            double floor, bool bound_candidates) const;
   /// The candidate's utility without occlusion (computed once): the sum over the members it
   /// sees, >= its exact utility.
   double unoccludedUtility(const HypothesisSet& hypotheses, StepState& state,
                            Candidate& candidate) const;
   /// The candidate's utility per type with occlusion (computed once): lines of sight cast
-  /// from its camera position to the members it sees (once per position and tilt level).
-  double exactUtility(const HypothesisSet& hypotheses, StepState& state,
-                      Candidate& candidate) const;
+  /// from its camera position to the members it sees (once per position and tilt level). Gives
+  /// up (-1, nothing kept but the lines of sight) as soon as the hypotheses found occluded show
+  /// that it cannot exceed `floor`.
+  double exactUtility(const HypothesisSet& hypotheses, StepState& state, Candidate& candidate,
+                      double floor = -std::numeric_limits<double>::infinity()) const;
   /// >= the rating of any view from a camera at `camera` (floor) searching `choice`: motion
   /// free but for the base's least drive, utility as given.
   double ratingBound(const TypeChoice& choice, const Eigen::Vector2d& camera,
@@ -188,10 +195,18 @@ class NextBestViewPlanner {
                    const std::vector<std::uint32_t>& nearby, const Eigen::Vector2d& position,
                    std::size_t position_index, const std::vector<char>& wanted,
                    std::vector<Candidate>& candidates) const;
-  /// >= orientationUtility of the member seen from the camera at `offset` from it
-  /// (`distance` its length), by table look-up.
+  /// >= orientationUtility of the member seen from a camera in the unit direction
+  /// `to_camera` from it, by table look-up.
   double orientationBound(const HypothesisGroups& groups, std::uint32_t member,
-                          const Eigen::Vector3d& offset, double distance) const;
+                          const Eigen::Vector3d& to_camera) const {
+    const std::uint32_t begin = groups.normalsBegin(member), end = groups.normalsBegin(member + 1);
+    if (begin == end)
+      return 1.0;  // recognisable from every side (only counting hypotheses are grouped)
+    double best = 0.0;
+    for (std::uint32_t n = begin; n < end; ++n)
+      best = std::max(best, orientation_bound_.ofCosine(groups.normal(n).dot(to_camera)));
+    return best;
+  }
   /// False if no base position within camera_reach_ of the camera's floor point (sampled on
   /// its circle) is free: the camera cannot be carried there.
   bool reachable(const Eigen::Vector2d& camera) const;

@@ -30,9 +30,10 @@ class WorldMap {
   /// True if the segment from `eye` to `target`'s centre crosses no occupied voxel but those of
   /// the target itself (voxels whose centre lies within half a voxel diagonal of its box).
   /// A segment that passes farther than a voxel diagonal from every box of the world is free
-  /// without a ray cast.
+  /// without a ray cast; the ray cast looks its voxels up in a grid of the occupied ones.
   bool lineOfSight(const Eigen::Vector3d& eye, const Box& target) const;
-  /// lineOfSight by the ray cast alone, always: the reference its shortcut is tested against.
+  /// lineOfSight by the ray cast through the OctoMap alone, always: the reference its shortcut
+  /// and its grid are tested against.
   bool lineOfSightByRayCast(const Eigen::Vector3d& eye, const Box& target) const;
 
   double resolution() const;
