@@ -376,6 +376,7 @@ bool TreeRecognizer::evaluateDiversely(std::vector<EvaluatedIsm>& evaluated, dou
   if (stats != nullptr) {
     ++stats->diverse_evaluations;
     stats->diverse_evaluations_better += better ? 1 : 0;
+    stats->diverse_evaluations_given_up += completed ? 0 : 1;
     stats->diverse_comparisons += budget.comparisons_used;
   }
   return better;

@@ -208,7 +208,10 @@ TEST_F(ExactSearch, WhereItRunsOutThePoseDiverseEvaluationOnlyRaisesTheBest) {
       EXPECT_GE(diverse, first);
       EXPECT_LE(diverse, all + 1e-9);
       EXPECT_EQ(stats.diverse_evaluations, stats.exact_searches_given_up);
-      EXPECT_LE(stats.diverse_evaluations_better, stats.diverse_evaluations);
+      EXPECT_LE(stats.diverse_evaluations_better + stats.diverse_evaluations_given_up,
+                stats.diverse_evaluations);
+      EXPECT_LE(stats.diverse_comparisons,
+                stats.diverse_evaluations * small_budget.diverse_max_comparisons);
       first_short += first < all - 1e-9 ? 1 : 0;
       raised += diverse > first + 1e-9 ? 1 : 0;
       reached += first < all - 1e-9 && diverse > all - 1e-9 ? 1 : 0;

@@ -104,9 +104,11 @@ struct TreeRecognitionStats {
   double largest_possible_shortfall = 0.0;
   std::size_t relaxed_bound_work = 0;  // comparisons and votes of the relaxed bounds
   /// Second evaluations with pose-diverse results where the exact search gave up (over
-  /// labellings), those whose best beat the first evaluation's, and their comparisons.
+  /// labellings), those whose best beat the first evaluation's, those abandoned at their
+  /// budget, and their comparisons.
   std::size_t diverse_evaluations = 0;
   std::size_t diverse_evaluations_better = 0;
+  std::size_t diverse_evaluations_given_up = 0;
   std::size_t diverse_comparisons = 0;
 };
 
