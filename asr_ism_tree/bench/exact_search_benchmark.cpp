@@ -109,12 +109,17 @@ void printExactSearchTable(std::ostream& out, const std::vector<ExactSearchRow>&
 int runExactSearchCommand(const std::vector<std::string>& arguments) {
   const asr_common::cli::CommandLine options(
       arguments,
-      {"recordings", "scene", "tests", "demo", "max-votes", "max-comparisons", "diverse"}, {});
+      {"recordings", "scene", "tests", "demo", "max-votes", "max-comparisons", "max-pose-steps",
+       "diverse"},
+      {});
   TreeRecognitionParameters parameters;
   parameters.exact_search_max_votes = static_cast<std::size_t>(options.integer(
       "max-votes", static_cast<long long>(parameters.exact_search_max_votes), 1, 1LL << 40));
   parameters.exact_search_max_comparisons = static_cast<std::size_t>(options.integer(
       "max-comparisons", static_cast<long long>(parameters.exact_search_max_comparisons), 1,
+      1LL << 50));
+  parameters.exact_search_max_pose_steps = static_cast<std::size_t>(options.integer(
+      "max-pose-steps", static_cast<long long>(parameters.exact_search_max_pose_steps), 0,
       1LL << 50));
   parameters.diverse_results_passed_up = static_cast<std::size_t>(options.integer(
       "diverse", static_cast<long long>(parameters.diverse_results_passed_up), 0, 1 << 20));

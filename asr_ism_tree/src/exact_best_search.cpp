@@ -1,7 +1,12 @@
 #include "exact_best_search.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <limits>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 namespace asr_ism_tree {
@@ -55,7 +60,13 @@ bool ExactBestSearch::stale(int ism) const {
 
 void ExactBestSearch::reevaluate(int ism, double from) {
   searched_from_[ism] = std::min(searched_from_[ism], from);
-  evaluate_(ism, searched_from_[ism]);
+  const double bound = boundOf(ism);
+  std::vector<double> member_from(tree_.isms[ism].members.size());
+  for (std::size_t m = 0; m < member_from.size(); ++m) {
+    const double others = bound - memberBound(ism, static_cast<int>(m));
+    member_from[m] = searched_from_[ism] - others - kMargin;
+  }
+  evaluate_(ism, searched_from_[ism], member_from);
   stamp_[ism] = ++clock_;
 }
 
@@ -97,6 +108,243 @@ bool ExactBestSearch::run(const std::vector<int>& bottom_up) {
   for (int ism : bottom_up) {
     if (stale(ism))
       reevaluate(ism, searched_from_[ism]);
+  }
+  return true;
+}
+
+}  // namespace asr_ism_tree
+
+namespace asr_ism_tree {
+namespace {
+
+using asr_common::Pose;
+
+struct OutOfSteps {};
+
+// The work of closing the pose gap, counted against its budget: each pose composed and each
+// vote compared costs one step.
+class Steps {
+ public:
+  explicit Steps(std::size_t& left) : left_(left) {}
+  void spend(std::size_t count) {
+    if (count > left_)
+      throw OutOfSteps{};
+    left_ -= count;
+  }
+  Pose compose(const Pose& a, const Pose& b) {
+    spend(1);
+    return asr_common::compose(a, b);
+  }
+
+ private:
+  std::size_t& left_;
+};
+
+// A pose at the resolution at which votes composed along the same chain coincide; q and -q are
+// one orientation.
+using PoseKey = std::array<std::int64_t, 7>;
+
+PoseKey poseKey(const Pose& pose) {
+  constexpr double kResolution = 1e-12;
+  const Eigen::Quaterniond& q = pose.orientation;
+  const double sign = q.w() < 0.0 ? -1.0 : 1.0;
+  const double values[7] = {pose.position.x(), pose.position.y(), pose.position.z(), sign * q.w(),
+                            sign * q.x(),      sign * q.y(),      sign * q.z()};
+  PoseKey key;
+  for (std::size_t i = 0; i < key.size(); ++i)
+    key[i] = std::llround(values[i] / kResolution);
+  return key;
+}
+
+struct PoseKeyHash {
+  std::size_t operator()(const PoseKey& key) const {
+    std::size_t hash = 1469598103934665603ULL;
+    for (std::int64_t value : key)
+      hash = (hash ^ static_cast<std::size_t>(value)) * 1099511628211ULL;
+    return hash;
+  }
+};
+
+// The votes of the inputs that can be part of a result reaching `from`, by cell of the support
+// radius: what a hypothesis there can reach at most.
+class EligibleVotes {
+ public:
+  EligibleVotes(const asr_ism::Ism& ism, const std::vector<asr_ism::IsmInput>& inputs,
+                const std::vector<double>& member_from,
+                const asr_ism::IsmRecognitionParameters& parameters, Steps& steps)
+      : steps_(steps),
+        radius_(parameters.supportRadius()),
+        cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
+        best_(ism.members.size(), 0.0) {
+    for (const asr_ism::IsmInput& input : inputs) {
+      if (input.weight < member_from[input.member])
+        continue;
+      for (const auto& relative : ism.members[input.member].relative_poses) {
+        const Pose vote = steps_.compose(input.pose, relative.reference_in_member);
+        const Cell cell = cellOf(vote.position);
+        if (cells_.count(cell) == 0) {
+          steps_.spend(27);
+          forEachNeighbour(cell, [&](const Cell& near) { near_.insert(near); });
+        }
+        cells_[cell].push_back(static_cast<int>(votes_.size()));
+        votes_.push_back({vote, input.member, input.weight});
+      }
+    }
+  }
+
+  // The most any hypothesis can reach: per member, the highest weight of its votes.
+  double mostReachable() const {
+    std::vector<double> best(best_.size(), 0.0);
+    for (const Vote& vote : votes_)
+      best[vote.member] = std::max(best[vote.member], vote.weight);
+    double sum = 0.0;
+    for (double weight : best)
+      sum += weight;
+    return sum;
+  }
+
+  // The most a hypothesis at `pose` can reach: per member, the highest weight among the votes
+  // within the support radius and the maximum angle deviation (with a margin for rounding).
+  double reachableAt(const Pose& pose) {
+    const Cell own = cellOf(pose.position);
+    if (near_.count(own) == 0)
+      return 0.0;  // no vote in the 27 cells around
+    std::fill(best_.begin(), best_.end(), 0.0);
+    steps_.spend(27);
+    forEachNeighbour(own, [&](const Cell& cell) {
+      const auto found = cells_.find(cell);
+      if (found == cells_.end())
+        return;
+      steps_.spend(found->second.size());
+      for (int v : found->second) {
+        const Vote& vote = votes_[v];
+        if ((vote.pose.position - pose.position).norm() > radius_ * (1.0 + 1e-9) ||
+            std::abs(vote.pose.orientation.dot(pose.orientation)) <
+                cos_half_max_angle_ * (1.0 - 1e-12))
+          continue;
+        best_[vote.member] = std::max(best_[vote.member], vote.weight);
+      }
+    });
+    double sum = 0.0;
+    for (double weight : best_)
+      sum += weight;
+    return sum;
+  }
+
+ private:
+  using Cell = std::array<std::int64_t, 3>;
+  struct CellHash {
+    std::size_t operator()(const Cell& c) const {
+      return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
+    }
+  };
+  struct Vote {
+    Pose pose;
+    int member;
+    double weight;
+  };
+
+  template <typename Visit>
+  static void forEachNeighbour(const Cell& cell, Visit visit) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz)
+          visit(Cell{cell[0] + dx, cell[1] + dy, cell[2] + dz});
+      }
+    }
+  }
+
+  Cell cellOf(const Eigen::Vector3d& p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x() / radius_)),
+            static_cast<std::int64_t>(std::floor(p.y() / radius_)),
+            static_cast<std::int64_t>(std::floor(p.z() / radius_))};
+  }
+
+  Steps& steps_;
+  const double radius_;
+  const double cos_half_max_angle_;
+  std::vector<Vote> votes_;
+  std::unordered_map<Cell, std::vector<int>, CellHash> cells_;
+  std::unordered_set<Cell, CellHash> near_;  // the cells within one of a vote's
+  std::vector<double> best_;
+};
+
+// Every result pose of ISM `ism` in the exhaustive search, with the estimate its chain starts
+// at: every vote of its inputs, the child results' poses found recursively.
+class ChainPoses {
+ public:
+  using Visit = std::function<void(const Pose& pose, int estimate)>;
+
+  ChainPoses(const IsmTree& tree, const std::vector<Pose>& poses,
+             const std::vector<std::vector<int>>& estimates_of_object, Steps& steps)
+      : tree_(tree), poses_(poses), estimates_of_object_(estimates_of_object), steps_(steps) {}
+
+  void forEach(int ism, const Visit& visit) {
+    for (const auto& member : tree_.isms[ism].members) {
+      const auto voteFrom = [&](const Pose& input, int estimate) {
+        for (const auto& relative : member.relative_poses)
+          visit(steps_.compose(input, relative.reference_in_member), estimate);
+      };
+      if (member.isPlaceholder()) {
+        forEach(member.child_ism, voteFrom);
+        continue;
+      }
+      for (int estimate : estimates_of_object_[tree_.topology.indexOf(member.object)])
+        voteFrom(poses_[estimate], estimate);
+    }
+  }
+
+ private:
+  const IsmTree& tree_;
+  const std::vector<Pose>& poses_;
+  const std::vector<std::vector<int>>& estimates_of_object_;
+  Steps& steps_;
+};
+
+}  // namespace
+
+bool poseGapCandidates(const IsmTree& tree, int ism, double from,
+                       const std::vector<asr_ism::IsmInput>& inputs,
+                       const std::vector<double>& member_from, const std::vector<Pose>& poses,
+                       const std::vector<std::vector<int>>& estimates_of_object,
+                       std::size_t& steps_left, std::vector<PoseOnlyInput>& candidates) {
+  candidates.clear();
+  if (!std::isfinite(from))
+    return true;
+  const asr_ism::Ism& model = tree.isms[ism];
+  if (std::none_of(model.members.begin(), model.members.end(),
+                   [](const auto& member) { return member.isPlaceholder(); }))
+    return true;
+  Steps steps(steps_left);
+  try {
+    EligibleVotes eligible(model, inputs, member_from, tree.parameters, steps);
+    if (eligible.mostReachable() < from - kMargin)
+      return true;  // no hypothesis anywhere reaches `from`
+    // Poses a member's inputs already have, and those found.
+    std::vector<std::unordered_set<PoseKey, PoseKeyHash>> known(model.members.size());
+    for (const asr_ism::IsmInput& input : inputs)
+      known[input.member].insert(poseKey(input.pose));
+    ChainPoses chains(tree, poses, estimates_of_object, steps);
+    for (std::size_t m = 0; m < model.members.size(); ++m) {
+      const auto& member = model.members[m];
+      if (!member.isPlaceholder())
+        continue;
+      chains.forEach(member.child_ism, [&](const Pose& pose, int estimate) {
+        if (known[m].count(poseKey(pose)) > 0)
+          return;
+        for (const auto& relative : member.relative_poses) {
+          const Pose vote = steps.compose(pose, relative.reference_in_member);
+          if (eligible.reachableAt(vote) >= from - kMargin) {
+            known[m].insert(poseKey(pose));
+            candidates.push_back({static_cast<int>(m), pose, estimate});
+            return;
+          }
+        }
+      });
+    }
+  } catch (const OutOfSteps&) {
+    candidates.clear();
+    return false;
   }
   return true;
 }

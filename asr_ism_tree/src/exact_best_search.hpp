@@ -1,8 +1,11 @@
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <vector>
 
+#include "asr_common/pose.hpp"
+#include "asr_ism/ism_recognizer.hpp"
 #include "asr_ism_tree/ism_tree.hpp"
 
 namespace asr_ism_tree {
@@ -19,6 +22,12 @@ namespace asr_ism_tree {
 /// badly, the siblings that hold it are worth what they really reach, and the search asks for
 /// little beyond what the first evaluation passed up. Where the first evaluation already reached
 /// the bound nothing is asked at all.
+///
+/// The bound covers what a result *contributes*, not where hypotheses are: a parent's hypotheses
+/// sit at the votes of its inputs, so a child result below its bound, never passed up, could
+/// still be the *pose* of a better parent hypothesis. The evaluation closes that gap with
+/// poseGapCandidates() (below): each ISM is also given, as pose-only inputs, the child results
+/// (of the exhaustive search) at whose votes a hypothesis reaching `from` could lie.
 class ExactBestSearch {
  public:
   /// What the ISMs' current results are when the search starts.
@@ -33,7 +42,9 @@ class ExactBestSearch {
   };
   /// Re-evaluates one ISM from its children's current results. `from`: a sub-ISM passes up every
   /// result reaching it besides its few best; the root returns only the results reaching it.
-  using Evaluate = std::function<void(int ism, double from)>;
+  /// `member_from`, per member: what an input of it must reach to be part of such a result.
+  using Evaluate =
+      std::function<void(int ism, double from, const std::vector<double>& member_from)>;
   /// The best objective an ISM's current results reach, 0 if none.
   using BestObjective = std::function<double(int ism)>;
 
@@ -67,5 +78,36 @@ class ExactBestSearch {
   std::vector<unsigned> stamp_;        // when each ISM was last evaluated
   unsigned clock_ = 0;
 };
+
+/// A child result of the exhaustive search given to its parent as a pose-only input: a
+/// hypothesis of the parent may sit at one of its votes.
+struct PoseOnlyInput {
+  int member = -1;  // the parent's placeholder member
+  asr_common::Pose pose;
+  int estimate = -1;  // the estimate its chain of votes starts at
+};
+
+/// The pose gap, closed. A hypothesis of ISM `ism` reaching `from` matches only inputs reaching
+/// their `member_from` (what else the other members can add does not suffice otherwise), and
+/// each matched vote lies within the support radius and the maximum angle deviation of the
+/// hypothesis' pose. That pose is a vote of some input: an estimate (always an input), a child
+/// result passed up, or a child result of the exhaustive search not passed up; the latter's
+/// votes must then lie that close to votes of inputs reaching their `member_from` whose weights
+/// add up to `from`. The exhaustive search's child results are at every vote of the child's
+/// inputs (each vote is a hypothesis there, matching at least itself), so its result poses are
+/// the chains estimate * relative pose * relative pose ... up the subtree, composed as the
+/// recogniser composes votes. Each such pose that `inputs` lacks and one of whose votes passes
+/// that test is returned. Its objective there is at least its chain's estimate's (1): the
+/// caller gives it a lower weight, so it can be no better instance's match, only its pose.
+/// Holds for every ISM the search evaluates, whatever its inputs were found from, so for
+/// ExactBestSearch::Start::kFirstEvaluation and kLowerBounds alike. Chains multiply by the number
+/// of relative poses per level: false where more than `steps_left` compositions would be needed
+/// (the gap then stays open), `steps_left` reduced by those made.
+bool poseGapCandidates(const IsmTree& tree, int ism, double from,
+                       const std::vector<asr_ism::IsmInput>& inputs,
+                       const std::vector<double>& member_from,
+                       const std::vector<asr_common::Pose>& poses,
+                       const std::vector<std::vector<int>>& estimates_of_object,
+                       std::size_t& steps_left, std::vector<PoseOnlyInput>& candidates);
 
 }  // namespace asr_ism_tree

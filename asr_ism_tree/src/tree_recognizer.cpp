@@ -51,9 +51,16 @@ struct ExactSearchBudget {
   std::size_t max_votes;         // per evaluation of one ISM
   std::size_t comparisons_left;  // vote-to-hypothesis comparisons
   std::size_t votes_left;        // cast over all evaluations
+  std::size_t pose_steps_left;   // compositions seeking the poses of the pose gap
   std::size_t comparisons_used = 0;
   std::size_t votes_used = 0;
+  std::size_t pose_steps_used = 0;
+  bool pose_gap_open = false;  // the steps ran out: no more are sought
 };
+
+// A pose-only input's weight: below every result's objective (at least its chain's estimate's,
+// 1), so no hypothesis that matters matches it; it only adds its votes as hypotheses.
+constexpr double kPoseOnlyWeight = 0.5;
 
 // The first evaluation (a few results per sub-ISM) and, where its best instance may not be the
 // exhaustive search's, the exact search's, whose root holds the results reaching the first best;
@@ -236,7 +243,8 @@ void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>
                                  const std::vector<Pose>& poses,
                                  const std::vector<std::vector<int>>& estimates_of_object,
                                  asr_ism::IsmRecognitionStats& stats, ExactSearchBudget* budget,
-                                 std::size_t diverse) const {
+                                 std::size_t diverse,
+                                 const std::vector<double>* member_from) const {
   const auto& members = tree_.isms[ism].members;
   std::vector<IsmInput> inputs;
   EvaluatedIsm& current = evaluated[ism];
@@ -254,6 +262,18 @@ void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>
     for (int estimate : estimates_of_object[tree_.topology.indexOf(members[m].object)]) {
       inputs.push_back({static_cast<int>(m), poses[estimate], 1.0, {estimate}});
       current.input_origin.push_back(estimate);
+    }
+  }
+  if (budget != nullptr && member_from != nullptr && !budget->pose_gap_open) {
+    std::vector<PoseOnlyInput> pose_only;
+    const std::size_t steps_before = budget->pose_steps_left;
+    if (!poseGapCandidates(tree_, ism, from, inputs, *member_from, poses, estimates_of_object,
+                           budget->pose_steps_left, pose_only))
+      budget->pose_gap_open = true;
+    budget->pose_steps_used += steps_before - budget->pose_steps_left;
+    for (const PoseOnlyInput& candidate : pose_only) {
+      inputs.push_back({candidate.member, candidate.pose, kPoseOnlyWeight, {candidate.estimate}});
+      current.input_origin.push_back(-1);  // no result of the child's to follow
     }
   }
   asr_ism::IsmResultSelection selection;
@@ -308,8 +328,9 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
   std::vector<bool> object_seen(tree_.objects().size());
   for (std::size_t object = 0; object < object_seen.size(); ++object)
     object_seen[object] = !estimates_of_object[object].empty();
-  const auto evaluate = [&](int ism, double from) {
-    evaluateIsm(ism, from, evaluated, poses, estimates_of_object, ism_stats[ism], &budget);
+  const auto evaluate = [&](int ism, double from, const std::vector<double>& member_from) {
+    evaluateIsm(ism, from, evaluated, poses, estimates_of_object, ism_stats[ism], &budget, 0,
+                &member_from);
   };
   const auto best = [&](int ism) {
     const auto& results = evaluated[ism].results;
@@ -318,9 +339,32 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
   const double best_before = best(0);
   const auto start = from_lower_bounds ? ExactBestSearch::Start::kLowerBounds
                                        : ExactBestSearch::Start::kFirstEvaluation;
+  // Seeking the poses of the pose gap costs most where the search gives up anyway: it runs
+  // without them first and, only where that completes, once more with them.
+  const std::vector<EvaluatedIsm> starting_results = evaluated;
+  const bool seek_poses = !budget.pose_gap_open;
+  budget.pose_gap_open = true;
   try {
-    return ExactBestSearch(tree_, std::move(object_seen), evaluate, best, start).run(bottom_up_);
+    if (!ExactBestSearch(tree_, object_seen, evaluate, best, start).run(bottom_up_)) {
+      budget.pose_gap_open = !seek_poses;
+      return false;
+    }
+    budget.pose_gap_open = !seek_poses;
+    if (seek_poses) {
+      std::vector<EvaluatedIsm> without_poses = std::move(evaluated);
+      evaluated = starting_results;
+      try {
+        ExactBestSearch(tree_, object_seen, evaluate, best, start).run(bottom_up_);
+      } catch (const ExactSearchTooLarge&) {
+        budget.pose_gap_open = true;
+        evaluated = std::move(without_poses);
+      }
+    }
+    if (stats != nullptr && budget.pose_gap_open)
+      stats->pose_gaps_left_open += 1;
+    return true;
   } catch (const ExactSearchTooLarge&) {
+    budget.pose_gap_open = !seek_poses;
   }
   // Over the same estimates, a second evaluation may find a better instance than the first.
   const bool better =
@@ -360,7 +404,7 @@ bool TreeRecognizer::evaluateDiversely(std::vector<EvaluatedIsm>& evaluated, dou
   if (diverse == 0)
     return false;
   ExactSearchBudget budget{parameters_.exact_search_max_votes, parameters_.diverse_max_comparisons,
-                           parameters_.exact_search_max_total_votes};
+                           parameters_.exact_search_max_total_votes, 0};
   bool completed = true;
   try {
     // Sub-ISMs: every result (one per pose) before the suppression; the root: better ones only.
@@ -520,9 +564,9 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
   if (stats != nullptr)
     *stats = TreeRecognitionStats{};
   std::vector<SceneInstance> instances;
-  ExactSearchBudget budget{parameters_.exact_search_max_votes,
-                           parameters_.exact_search_max_comparisons,
-                           parameters_.exact_search_max_total_votes};
+  ExactSearchBudget budget{
+      parameters_.exact_search_max_votes, parameters_.exact_search_max_comparisons,
+      parameters_.exact_search_max_total_votes, parameters_.exact_search_max_pose_steps};
   for (std::size_t labelling = 0; labelling < labellings; ++labelling) {
     const auto every_estimate =
         matching.estimatesOfObjects(labelling, tree_.objects().size(), canonical);
@@ -548,6 +592,7 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
   if (stats != nullptr) {
     stats->exact_search_comparisons = budget.comparisons_used;
     stats->exact_search_votes = budget.votes_used;
+    stats->pose_steps = budget.pose_steps_used;
   }
   // Best first; the root's order (which breaks ties by the model) within one labelling.
   std::stable_sort(instances.begin(), instances.end(), [](const auto& a, const auto& b) {

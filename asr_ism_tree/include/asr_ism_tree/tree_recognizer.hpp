@@ -59,6 +59,11 @@ struct TreeRecognitionParameters {
   /// the development machine (0.2 s for all), which the comparisons do not count. With both
   /// caps one recognition's exact search stays below about 0.5 s (docs/recognition.md).
   std::size_t exact_search_max_total_votes = 100000;
+  /// ... and the poses of child results a parent hypothesis may sit at (the pose gap,
+  /// exact_best_search.hpp) are sought with at most this many pose compositions in one
+  /// recognition. Beyond it the search goes on without them, and its best may fall short of the
+  /// exhaustive search's (TreeRecognitionStats::pose_gaps_left_open).
+  std::size_t exact_search_max_pose_steps = 1000000;
   /// Where the exact search gives up: 0 (default), the first best stands unchecked. n > 0: an
   /// upper bound of the exhaustive search's best is computed with at most n comparisons
   /// (relaxed_tree_bound.hpp); where it is the first best, that best is proven (counted in
@@ -96,6 +101,11 @@ struct TreeRecognitionStats {
   std::size_t repeat_searches_given_up = 0;
   std::size_t exact_search_comparisons = 0;  // spent by the exact search (within isms as well)
   std::size_t exact_search_votes = 0;        // cast by the exact search (within isms as well)
+  /// Exact searches (over labellings, first and over repeats) that completed without every
+  /// pose a better hypothesis could sit at (exact_search_max_pose_steps ran out): their best
+  /// stands but may fall short of the exhaustive search's.
+  std::size_t pose_gaps_left_open = 0;
+  std::size_t pose_steps = 0;  // pose compositions spent closing the gap
   /// Searches that ran out of budget but whose best the relaxed bound (relaxed_tree_bound.hpp)
   /// proved to be the exhaustive search's: not counted as given up.
   std::size_t exact_searches_proven_by_bound = 0;
@@ -150,7 +160,7 @@ class TreeRecognizer {
                    const std::vector<Pose>& poses,
                    const std::vector<std::vector<int>>& estimates_of_object,
                    asr_ism::IsmRecognitionStats& stats, ExactSearchBudget* budget = nullptr,
-                   std::size_t diverse = 0) const;
+                   std::size_t diverse = 0, const std::vector<double>* member_from = nullptr) const;
   // Where the exact search gave up: evaluates the tree into `evaluated` with pose-diverse
   // results passed up (TreeRecognitionParameters::diverse_results_passed_up). True if its root
   // holds a result better than `first_best`.
