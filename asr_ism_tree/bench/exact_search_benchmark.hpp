@@ -21,8 +21,10 @@ struct ExactSearchRow {
   double exact_max_ms = 0.0;
   std::size_t exact_max_comparisons = 0;  // of the exact search in one recognition
   std::size_t given_up = 0;               // configurations where the exact search gave up
-  std::size_t improved = 0;               // configurations whose best confidence it raised
-  double largest_gain = 0.0;              // in confidence
+  std::size_t pose_gap_open =
+      0;                      // ... where it completed without every pose (exact_best_search.hpp)
+  std::size_t improved = 0;   // configurations whose best confidence it raised
+  double largest_gain = 0.0;  // in confidence
 };
 
 /// `scene`: the kitchen scene to measure (empty: all ten); `tests` configurations each.

@@ -23,7 +23,7 @@ const char* const kUsage =
     "      scenes (relations, false positives, recognition time), and the runtime plot of\n"
     "      optimised trees of synthetic scenes; tables and plot in DIR (default out/topology).\n"
     "  exact [--recordings DIR] [--scene NAME] [--tests N] [--demo FILE --scene NAME]\n"
-    "        [--max-votes V] [--max-comparisons C] [--diverse K]\n"
+    "        [--max-votes V] [--max-comparisons C] [--max-pose-steps P] [--diverse K]\n"
     "      what the exact tree search costs where its bound is loosest: topology selection's N\n"
     "      (200) test configurations of each kitchen scene (or of a scene of FILE), recognised\n"
     "      by the complete tree with and without it (times, the work it spent, where it gave up\n"
