@@ -21,10 +21,13 @@ struct ExactSearchRow {
   double exact_max_ms = 0.0;
   std::size_t exact_max_comparisons = 0;  // of the exact search in one recognition
   std::size_t given_up = 0;               // configurations where the exact search gave up
-  std::size_t pose_gap_open =
-      0;                      // ... where it completed without every pose (exact_best_search.hpp)
-  std::size_t improved = 0;   // configurations whose best confidence it raised
-  double largest_gain = 0.0;  // in confidence
+  // configurations where it completed without every pose (exact_best_search.hpp)
+  std::size_t pose_gap_open = 0;
+  std::size_t improved = 0;  // configurations whose best confidence it raised
+  std::size_t subset_searches =
+      0;                        // recognitions of subsets of the seen objects, all configurations
+  std::size_t subsets_cut = 0;  // configurations where those ran out of comparisons
+  double largest_gain = 0.0;    // in confidence
 };
 
 /// `scene`: the kitchen scene to measure (empty: all ten); `tests` configurations each.
@@ -35,7 +38,8 @@ std::vector<ExactSearchRow> benchmarkExactSearch(const std::string& recordings,
 
 void printExactSearchTable(std::ostream& out, const std::vector<ExactSearchRow>& rows);
 
-/// `asr_bench exact [--recordings DIR] [--scene NAME] [--tests N]`.
+/// `asr_bench exact [--recordings DIR] [--scene NAME] [--tests N] [--max-votes N]
+/// [--max-comparisons N] [--diverse N] [--subsets N]`.
 int runExactSearchCommand(const std::vector<std::string>& arguments);
 
 }  // namespace asr_ism_tree::bench
