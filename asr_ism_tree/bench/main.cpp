@@ -10,12 +10,13 @@ const char* const kUsage =
     "usage: asr_bench <benchmark> [options]\n"
     "benchmarks:\n"
     "  recognition [--json] [--recordings DIR] [--threads N] [--no-synthetic]\n"
-    "              [--synthetic-json FILE] [--no-clutter | --clutter-only]\n"
+    "              [--synthetic-json FILE] [--no-clutter | --clutter-only] [--max-votes V]\n"
     "      learning and recognition times of ISM trees (star and complete topologies) for the\n"
     "      ten kitchen scenes of the recordings, and a scaling run on synthetic demonstrations.\n"
     "      --json prints the scene rows as one JSON array; --synthetic-json writes the synthetic\n"
     "      rows to FILE. The clutter series recognises gedeck set 5 repeated with jitter up to\n"
-    "      10,000 estimates (star and complete trees).\n"
+    "      10,000 estimates (star and complete trees); --max-votes sets its exact search's votes\n"
+    "      cap per ISM (default: the library's).\n"
     "  topology [--json] [--out DIR] [--scenes A,B] [--recordings DIR] [--tests N] [--alpha A]\n"
     "           [--beta B] [--max-duration-ms D] [--max-evaluations E] [--seed S]\n"
     "           [--synthetic-max-objects N] [--threads T] [--no-synthetic]\n"
@@ -27,7 +28,7 @@ const char* const kUsage =
     "      what the exact tree search costs where its bound is loosest: topology selection's N\n"
     "      (200) test configurations of each kitchen scene (or of a scene of FILE), recognised\n"
     "      by the complete tree with and without it (times, the work it spent, where it gave up\n"
-    "      or raised the best), under its limits (default 20,000 votes, 5,000,000 comparisons;\n"
+    "      or raised the best), under its limits (default 60,000 votes, 5,000,000 comparisons;\n"
     "      where it gives up, K (32) pose-diverse results per sub-ISM are tried, 0: none).\n";
 
 }  // namespace
