@@ -60,6 +60,8 @@ ExactSearchRow measureScene(const asr_ism::Demonstration& demonstration, std::si
       row.exact_max_comparisons =
           std::max(row.exact_max_comparisons, with.stats.exact_search_comparisons);
       row.given_up += with.stats.exact_searches_given_up > 0 ? 1 : 0;
+      row.subset_searches += with.stats.object_subset_searches;
+      row.subsets_cut += with.stats.object_subset_searches_cut > 0 ? 1 : 0;
       const double gain = with.best_confidence - without.best_confidence;
       row.improved += gain > 1e-9 ? 1 : 0;
       row.largest_gain = std::max(row.largest_gain, gain);
@@ -94,22 +96,23 @@ std::vector<ExactSearchRow> benchmarkExactSearch(const std::string& recordings,
 void printExactSearchTable(std::ostream& out, const std::vector<ExactSearchRow>& rows) {
   out << "Exact search on topology selection's test configurations (complete trees)\n";
   out << "scene              configs  first mean/max ms   exact mean/max ms  max comparisons"
-         "  given up  improved  largest gain\n";
+         "  given up  improved  largest gain  subsets  cut\n";
   char line[200];
   for (const ExactSearchRow& row : rows) {
     std::snprintf(line, sizeof line,
-                  "%-17s  %7zu  %8.2f %8.1f  %8.2f %8.1f  %15zu  %8zu  %8zu  %12.4f\n",
+                  "%-17s  %7zu  %8.2f %8.1f  %8.2f %8.1f  %15zu  %8zu  %8zu  %12.4f  %7zu  %3zu\n",
                   row.scene.c_str(), row.configurations, row.first_mean_ms, row.first_max_ms,
                   row.exact_mean_ms, row.exact_max_ms, row.exact_max_comparisons, row.given_up,
-                  row.improved, row.largest_gain);
+                  row.improved, row.largest_gain, row.subset_searches, row.subsets_cut);
     out << line;
   }
 }
 
 int runExactSearchCommand(const std::vector<std::string>& arguments) {
-  const asr_common::cli::CommandLine options(
-      arguments,
-      {"recordings", "scene", "tests", "demo", "max-votes", "max-comparisons", "diverse"}, {});
+  const asr_common::cli::CommandLine options(arguments,
+                                             {"recordings", "scene", "tests", "demo", "max-votes",
+                                              "max-comparisons", "diverse", "subsets"},
+                                             {});
   TreeRecognitionParameters parameters;
   parameters.exact_search_max_votes = static_cast<std::size_t>(options.integer(
       "max-votes", static_cast<long long>(parameters.exact_search_max_votes), 1, 1LL << 40));
@@ -118,6 +121,8 @@ int runExactSearchCommand(const std::vector<std::string>& arguments) {
       1LL << 50));
   parameters.diverse_results_passed_up = static_cast<std::size_t>(options.integer(
       "diverse", static_cast<long long>(parameters.diverse_results_passed_up), 0, 1 << 20));
+  parameters.object_subsets_max_comparisons = static_cast<std::size_t>(options.integer(
+      "subsets", static_cast<long long>(parameters.object_subsets_max_comparisons), 0, 1LL << 50));
   const std::size_t tests =
       static_cast<std::size_t>(options.integer("tests", 200, 1, kMaxTestCount));
   const std::string scene = options.optional("scene", "");

@@ -22,7 +22,10 @@ struct ExactSearchRow {
   std::size_t exact_max_comparisons = 0;  // of the exact search in one recognition
   std::size_t given_up = 0;               // configurations where the exact search gave up
   std::size_t improved = 0;               // configurations whose best confidence it raised
-  double largest_gain = 0.0;              // in confidence
+  std::size_t subset_searches =
+      0;                        // recognitions of subsets of the seen objects, all configurations
+  std::size_t subsets_cut = 0;  // configurations where those ran out of comparisons
+  double largest_gain = 0.0;    // in confidence
 };
 
 /// `scene`: the kitchen scene to measure (empty: all ten); `tests` configurations each.
@@ -33,7 +36,8 @@ std::vector<ExactSearchRow> benchmarkExactSearch(const std::string& recordings,
 
 void printExactSearchTable(std::ostream& out, const std::vector<ExactSearchRow>& rows);
 
-/// `asr_bench exact [--recordings DIR] [--scene NAME] [--tests N]`.
+/// `asr_bench exact [--recordings DIR] [--scene NAME] [--tests N] [--max-votes N]
+/// [--max-comparisons N] [--diverse N] [--subsets N]`.
 int runExactSearchCommand(const std::vector<std::string>& arguments);
 
 }  // namespace asr_ism_tree::bench

@@ -24,12 +24,14 @@ const char* const kUsage =
     "      scenes (relations, false positives, recognition time), and the runtime plot of\n"
     "      optimised trees of synthetic scenes; tables and plot in DIR (default out/topology).\n"
     "  exact [--recordings DIR] [--scene NAME] [--tests N] [--demo FILE --scene NAME]\n"
-    "        [--max-votes V] [--max-comparisons C] [--diverse K]\n"
+    "        [--max-votes V] [--max-comparisons C] [--diverse K] [--subsets S]\n"
     "      what the exact tree search costs where its bound is loosest: topology selection's N\n"
     "      (200) test configurations of each kitchen scene (or of a scene of FILE), recognised\n"
     "      by the complete tree with and without it (times, the work it spent, where it gave up\n"
     "      or raised the best), under its limits (default 60,000 votes, 5,000,000 comparisons;\n"
-    "      where it gives up, K (32) pose-diverse results per sub-ISM are tried, 0: none).\n";
+    "      where it gives up, K (32) pose-diverse results per sub-ISM are tried, 0: none, and\n"
+    "      subsets of the seen objects are recognised within S (5,000,000) comparisons, 0: "
+    "none).\n";
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include "asr_ism_tree/estimate_matching.hpp"
 #include "asr_ism_tree/repeated_detections.hpp"
 #include "exact_best_search.hpp"
+#include "object_subsets.hpp"
 #include "pose_diverse_results.hpp"
 #include "relaxed_tree_bound.hpp"
 
@@ -199,12 +200,44 @@ bool sameInstance(const SceneInstance& a, const SceneInstance& b) {
   return true;
 }
 
+void addIsmWork(asr_ism::IsmRecognitionStats& total, const asr_ism::IsmRecognitionStats& part) {
+  total.votes += part.votes;
+  total.bins += part.bins;
+  total.candidates += part.candidates;
+  total.comparisons += part.comparisons;
+  total.neighbourhood_votes += part.neighbourhood_votes;
+}
+
+// The best objective any of the evaluation's roots reached, 0 if none.
+double bestRootObjective(const TreeEvaluation& evaluation) {
+  double best = 0.0;
+  for (const auto& [evaluated, ran] :
+       {std::make_pair(&evaluation.first, true),
+        std::make_pair(&evaluation.exact, evaluation.has_exact),
+        std::make_pair(&evaluation.over_repeats, evaluation.has_over_repeats)}) {
+    if (ran && !(*evaluated)[0].results.empty())
+      best = std::max(best, (*evaluated)[0].results.front().objective);
+  }
+  return best;
+}
+
+// Per object its estimates if it is in `subset`, none otherwise.
+std::vector<std::vector<int>> estimatesWithin(ObjectSet subset,
+                                              std::vector<std::vector<int>> estimates_of_object) {
+  for (std::size_t object = 0; object < estimates_of_object.size(); ++object) {
+    if (((subset >> object) & 1U) == 0U)
+      estimates_of_object[object].clear();
+  }
+  return estimates_of_object;
+}
+
+using RootResults = std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>>;
+
 // The root results that become instances: the first evaluation's, and the best of the exact
 // searches' where it is better, in place of the first results it makes redundant (their
 // estimates are all among its own).
-std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>> rootResultsToAssemble(
-    const TreeEvaluation& evaluation) {
-  std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>> chosen;
+RootResults rootResultsToAssemble(const TreeEvaluation& evaluation) {
+  RootResults chosen;
   const auto& first = evaluation.first[0].results;
   const std::vector<EvaluatedIsm>* better = nullptr;
   double best = first.empty() ? -std::numeric_limits<double>::infinity() : first.front().objective;
@@ -228,6 +261,20 @@ std::vector<std::pair<const std::vector<EvaluatedIsm>*, std::size_t>> rootResult
       chosen.emplace_back(&evaluation.first, r);
   }
   return chosen;
+}
+
+// Puts the best root result of a recognition over fewer objects first, in place of the results
+// it makes redundant (their estimates are all among its own).
+void preferBestOf(const TreeEvaluation& subset_evaluation, RootResults& chosen) {
+  const auto best = rootResultsToAssemble(subset_evaluation).front();
+  const std::vector<int>& used = (*best.first)[0].results[best.second].estimates;
+  const auto redundant = [&](const auto& root_result) {
+    const std::vector<int>& estimates =
+        (*root_result.first)[0].results[root_result.second].estimates;
+    return std::includes(used.begin(), used.end(), estimates.begin(), estimates.end());
+  };
+  chosen.erase(std::remove_if(chosen.begin(), chosen.end(), redundant), chosen.end());
+  chosen.insert(chosen.begin(), best);
 }
 
 }  // namespace
@@ -419,13 +466,8 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
                       &TreeRecognitionStats::repeat_searches_given_up);
   }
   if (stats != nullptr) {
-    for (const auto& s : ism_stats) {
-      stats->isms.votes += s.votes;
-      stats->isms.bins += s.bins;
-      stats->isms.candidates += s.candidates;
-      stats->isms.comparisons += s.comparisons;
-      stats->isms.neighbourhood_votes += s.neighbourhood_votes;
-    }
+    for (const auto& s : ism_stats)
+      addIsmWork(stats->isms, s);
     stats->root_results += evaluated[0].results.size();
   }
   return evaluation;
@@ -486,6 +528,64 @@ SceneInstance TreeRecognizer::assembleInstance(
   return instance;
 }
 
+bool TreeRecognizer::searchObjectSubsets(const std::vector<Pose>& poses,
+                                         const std::vector<std::vector<int>>& estimates_of_object,
+                                         const std::vector<std::vector<int>>& every_estimate,
+                                         const TreeEvaluation& evaluation,
+                                         TreeRecognitionStats& stats,
+                                         TreeEvaluation& better) const {
+  if (parameters_.object_subsets_max_comparisons == 0 || tree_.objects().size() > 64)
+    return false;
+  // An ISM over objects only tried every hypothesis in the first evaluation: its best there is
+  // its maximum, unless that ran over the representatives of repeated detections only.
+  const bool over_every_estimate = estimates_of_object == every_estimate;
+  std::vector<double> maximum(tree_.isms.size(), kUnbounded);
+  for (std::size_t ism = 0; ism < tree_.isms.size(); ++ism) {
+    const auto& members = tree_.isms[ism].members;
+    const auto& results = evaluation.first[ism].results;
+    const bool objects_only = std::none_of(members.begin(), members.end(),
+                                           [](const auto& m) { return m.isPlaceholder(); });
+    if (objects_only && over_every_estimate)
+      maximum[ism] = results.empty() ? 0.0 : results.front().objective;
+  }
+  ObjectSet seen = 0;
+  for (std::size_t object = 0; object < every_estimate.size(); ++object)
+    seen |= every_estimate[object].empty() ? 0U : ObjectSet{1} << object;
+  ObjectSubsetSearch search(SubsetBound(tree_, std::move(maximum)), seen,
+                            bestRootObjective(evaluation), false);
+  bool found = false;
+  std::size_t comparisons = 0;
+  while (const std::optional<ObjectSet> subset = search.next()) {
+    if (comparisons >= parameters_.object_subsets_max_comparisons) {
+      ++stats.object_subset_searches_cut;
+      break;
+    }
+    ++stats.object_subset_searches;
+    // Recognised as if only these objects had been seen: with budgets of its own, so that its
+    // best is that of the configuration without the other objects.
+    const auto representatives = estimatesWithin(*subset, estimates_of_object);
+    const auto all = estimatesWithin(*subset, every_estimate);
+    TreeRecognitionStats spent;
+    ExactSearchBudget budget{parameters_.exact_search_max_votes,
+                             parameters_.exact_search_max_comparisons,
+                             parameters_.exact_search_max_total_votes};
+    TreeEvaluation evaluation = evaluateIsms(
+        poses, representatives, representatives != all ? &all : nullptr, &spent, budget);
+    addIsmWork(stats.isms, spent.isms);
+    comparisons += spent.isms.comparisons;
+    const double reached = bestRootObjective(evaluation);
+    if (reached > search.best() + kObjectiveMargin) {
+      better = std::move(evaluation);
+      found = true;
+      ++stats.object_subsets_better;
+    }
+    search.report(*subset, reached,
+                  spent.exact_searches_given_up + spent.repeat_searches_given_up == 0);
+  }
+  stats.object_subset_comparisons += comparisons;
+  return found;
+}
+
 std::size_t TreeRecognizer::mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
                                           const std::vector<Pose>& poses) const {
   const RepeatedDetectionTolerance tolerance{tree_.parameters.supportRadius(),
@@ -517,8 +617,9 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
         "objects of their types in more than " + std::to_string(parameters_.max_labellings) +
         " ways; give their ids, or fewer estimates of types the scene has several objects of");
   }
-  if (stats != nullptr)
-    *stats = TreeRecognitionStats{};
+  TreeRecognitionStats unasked;
+  TreeRecognitionStats& counted = stats != nullptr ? *stats : unasked;
+  counted = TreeRecognitionStats{};
   std::vector<SceneInstance> instances;
   ExactSearchBudget budget{parameters_.exact_search_max_votes,
                            parameters_.exact_search_max_comparisons,
@@ -529,11 +630,18 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
     auto estimates_of_object = every_estimate;
     const std::size_t merged =
         parameters_.merge_repeated_detections ? mergeRepeated(estimates_of_object, poses) : 0;
-    if (stats != nullptr)
-      stats->merged_estimates += merged;
+    counted.merged_estimates += merged;
+    const std::size_t given_up_before =
+        counted.exact_searches_given_up + counted.repeat_searches_given_up;
     const TreeEvaluation evaluation = evaluateIsms(
-        poses, estimates_of_object, merged > 0 ? &every_estimate : nullptr, stats, budget);
-    for (const auto& [evaluated, r] : rootResultsToAssemble(evaluation)) {
+        poses, estimates_of_object, merged > 0 ? &every_estimate : nullptr, &counted, budget);
+    RootResults chosen = rootResultsToAssemble(evaluation);
+    TreeEvaluation over_fewer_objects;
+    if (counted.exact_searches_given_up + counted.repeat_searches_given_up > given_up_before &&
+        searchObjectSubsets(poses, estimates_of_object, every_estimate, evaluation, counted,
+                            over_fewer_objects))
+      preferBestOf(over_fewer_objects, chosen);
+    for (const auto& [evaluated, r] : chosen) {
       SceneInstance instance = assembleInstance(*evaluated, r, poses, estimates_of_object);
       instance.ids_ignored = matching.ids_ignored;
       // One labelling cannot repeat an instance; only across labellings can one reappear.
@@ -545,10 +653,8 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
         instances.push_back(std::move(instance));
     }
   }
-  if (stats != nullptr) {
-    stats->exact_search_comparisons = budget.comparisons_used;
-    stats->exact_search_votes = budget.votes_used;
-  }
+  counted.exact_search_comparisons = budget.comparisons_used;
+  counted.exact_search_votes = budget.votes_used;
   // Best first; the root's order (which breaks ties by the model) within one labelling.
   std::stable_sort(instances.begin(), instances.end(), [](const auto& a, const auto& b) {
     return a.confidence > b.confidence + 1e-12;

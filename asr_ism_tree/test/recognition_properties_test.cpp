@@ -32,12 +32,11 @@ using asr_common::testing::recording;
 
 constexpr double kDegree = M_PI / 180.0;
 // How much lower than without it a badly seen object may leave the best instance of a tree: where
-// the exact search completes (exact_best_search.hpp), rounding only, which is guaranteed. Where
-// it gives up (beyond its votes or comparisons caps), the better of the first evaluation's best
-// and that of the pose-diverse evaluation stands, which is not guaranteed to be the exhaustive
-// search's; over these seeded cases it falls short by rounding only (measured; before the
-// pose-diverse evaluation by up to 0.031 in Gedeck_Ende), so a change that brings the
-// shortfall back fails here (the largest shortfalls are printed). Rounding either way.
+// the exact search completes (exact_best_search.hpp), rounding only. Where it gives up (beyond
+// its votes or comparisons caps), subsets of the seen objects are recognised too
+// (object_subsets.hpp), so the answer is at least that with the object removed unless their own
+// cap cut them short (counted and printed; 2 of gedeck's recognitions, where the pose-diverse
+// evaluation's best holds anyway). Rounding either way.
 constexpr double kTolerance = 1e-9;
 
 struct SceneFile {
@@ -114,6 +113,9 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
   std::size_t most_work = 0;  // comparisons of the exact search in one recognition
   // Of the pose-diverse evaluations: how many raised the best, how many ran out, their most work.
   std::size_t diverse_better = 0, diverse_given_up = 0, most_diverse_work = 0;
+  // Of the recognitions of subsets of the seen objects: how many, how many raised the best, and
+  // the recognitions where they ran out (only there is the property not guaranteed).
+  std::size_t subset_searches = 0, subsets_better = 0, subsets_cut = 0, most_subsets = 0;
   for (const auto& [topology, tree] : scene.trees) {
     const TreeRecognizer recognizer(tree);
     for (int trial = 0; trial < 40; ++trial) {
@@ -147,6 +149,10 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
           changed_stats.diverse_evaluations_given_up + removed_stats.diverse_evaluations_given_up;
       most_diverse_work = std::max({most_diverse_work, removed_stats.diverse_comparisons,
                                     changed_stats.diverse_comparisons});
+      subset_searches += changed_stats.object_subset_searches;
+      subsets_better += changed_stats.object_subsets_better;
+      most_subsets = std::max(most_subsets, changed_stats.object_subset_searches);
+      subsets_cut += changed_stats.object_subset_searches_cut;
       EXPECT_GE(with, without - kTolerance)
           << topology << " tree, set " << step << ", " << recorded[object].key.toString()
           << " perturbed at scale " << scale;
@@ -160,7 +166,10 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
             << " searches proven by the relaxed bound, largest possible shortfall shown by it "
             << largest_possible << "; the pose-diverse evaluation raised the best in "
             << diverse_better << " recognitions and ran out in " << diverse_given_up
-            << ", with at most " << most_diverse_work << " comparisons\n";
+            << ", with at most " << most_diverse_work << " comparisons; " << subset_searches
+            << " recognitions of subsets of the seen objects (at most " << most_subsets
+            << " in one) raised the best in " << subsets_better << ", ran out in " << subsets_cut
+            << "\n";
 }
 
 // A rigid motion: a shift of up to `max_shift` metres and a turn about the x, y or z axis or a

@@ -79,6 +79,16 @@ struct TreeRecognitionParameters {
   /// vote-to-hypothesis comparisons; votes are capped as in the exact search, so it adds at most
   /// about as much time as the exact search may take.
   std::size_t diverse_max_comparisons = 5000000;
+  /// Where the search over every seen object gave up: further recognitions with seen objects
+  /// left out (object_subsets.hpp), the best of all standing, so that the answer is at least
+  /// that with any object removed (seeing an object badly never scores lower than not seeing
+  /// it). Subsets that cannot beat the best found (by their number of leaves) or that lie
+  /// within one whose search completed are not recognised; each recognition has the budgets
+  /// above, so its best is that of the configuration without the other objects. No further
+  /// subset is recognised once they made this many vote-to-hypothesis comparisons in all
+  /// (TreeRecognitionStats::object_subset_searches_cut: only there may the answer fall below
+  /// that with some object removed). 0: off.
+  std::size_t object_subsets_max_comparisons = 20000000;
   /// Every sub-ISM passes every result up (of results at one pose, the best): the exhaustive
   /// search, slow beyond small scenes; what the exact search is tested against.
   bool pass_every_result = false;
@@ -112,6 +122,15 @@ struct TreeRecognitionStats {
   std::size_t diverse_evaluations_better = 0;
   std::size_t diverse_evaluations_given_up = 0;
   std::size_t diverse_comparisons = 0;
+  /// Recognitions of subsets of the seen objects where the search over all gave up (over
+  /// labellings), those whose best beat it, the labellings where
+  /// `object_subsets_max_comparisons` ran out before every subset that could beat the best was
+  /// recognised (there the answer may fall below that with some object removed), and the
+  /// comparisons those recognitions made.
+  std::size_t object_subset_searches = 0;
+  std::size_t object_subsets_better = 0;
+  std::size_t object_subset_searches_cut = 0;
+  std::size_t object_subset_comparisons = 0;
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
@@ -177,6 +196,15 @@ class TreeRecognizer {
                      std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
                      ExactSearchBudget& budget, TreeRecognitionStats* stats,
                      std::size_t TreeRecognitionStats::*given_up) const;
+  // Where the search over every seen object gave up in `evaluation`: the evaluation of the
+  // subset of the seen objects whose best beats it most (object_subsets.hpp) into `better`;
+  // false if none does. `estimates_of_object`: the representatives of repeated detections,
+  // `every_estimate`: all.
+  bool searchObjectSubsets(const std::vector<Pose>& poses,
+                           const std::vector<std::vector<int>>& estimates_of_object,
+                           const std::vector<std::vector<int>>& every_estimate,
+                           const TreeEvaluation& evaluation, TreeRecognitionStats& stats,
+                           TreeEvaluation& better) const;
   // Per object, one estimate for each group of repeated detections; returns how many were left
   // out.
   std::size_t mergeRepeated(std::vector<std::vector<int>>& estimates_of_object,
