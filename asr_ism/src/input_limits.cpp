@@ -27,12 +27,14 @@ void checkRecognitionParameters(const IsmRecognitionParameters& parameters,
 void checkVotingExtent(double bin_size, int height, double longest_relation,
                        const std::string& what) {
   // Leaf votes land within one relation of an estimate; every level up adds one more relation.
-  const double farthest = kMaxCoordinate + height * longest_relation;
-  if (!(farthest <= VotingSpace::maxCoordinate(bin_size))) {
+  // Estimates lie within the cube of kMaxCoordinate, so two votes of one ISM lie at most this far
+  // apart, along any axis of the frame the recogniser bins them in (ism_recognizer.hpp).
+  const double spread = 2.0 * (std::sqrt(3.0) * kMaxCoordinate + height * longest_relation);
+  if (!(spread <= VotingSpace::maxSpread(bin_size))) {
     std::ostringstream message;
     message << what << ": votes of " << height << " levels with relations up to "
-            << longest_relation << " m can land " << farthest << " m from the origin, beyond the "
-            << VotingSpace::maxCoordinate(bin_size) << " m bins of " << bin_size << " m can hold";
+            << longest_relation << " m can spread over " << spread << " m, beyond the "
+            << VotingSpace::maxSpread(bin_size) << " m bins of " << bin_size << " m can hold";
     throw InputError(message.str());
   }
 }

@@ -33,6 +33,21 @@ std::int64_t objectiveLevel(double objective) {
   return std::llround(objective / kBoundMargin);
 }
 
+// Whether `value` falls short of `bar` by more than the bound margin, judged by level: callers
+// often ask for objectives above one they have (the tree's exact search asks for results better
+// than its best by the margin), so that a hypothesis at that objective lies exactly on the
+// margin, and an exact comparison would let the last bits of its sum, which differ from frame to
+// frame, decide. Prunes only what `value < bar - kBoundMargin` prunes.
+bool fallsShort(double value, double bar) {
+  if (!std::isfinite(bar))
+    return bar > 0.0;
+  if (value < bar - 2.0 * kBoundMargin)
+    return true;
+  if (value >= bar - 0.5 * kBoundMargin)
+    return false;
+  return objectiveLevel(value) < objectiveLevel(bar) - 1;
+}
+
 // Votes as parallel arrays in bin order, so that a bin's neighbourhood is a few contiguous ranges.
 // Besides the vote's pose, each vote keeps where its input is (ox, oy, oz) and where the member
 // stands in the reference's frame (mx, my, mz), so a hypothesis can be carried back to the object.
@@ -218,6 +233,7 @@ class Search {
         max_comparisons_(selection.max_comparisons),
         perfect_results_matter_(selection.best_count > 0),
         compare_every_vote_(selection.compare_every_vote),
+        bin_size_(parameters.bin_size),
         support_radius_squared_(parameters.supportRadius() * parameters.supportRadius()),
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         sin_half_squared_max_angle_(sinHalfSquared(cos_half_max_angle_)) {
@@ -230,6 +246,9 @@ class Search {
     input_stamp_.assign(atoms_of_input.size(), 0);
     position_.resize(member_count_);
     orientation_.resize(member_count_);
+    x_order_.resize(votes.px.size());
+    for (std::size_t v = 0; v < x_order_.size(); ++v)
+      x_order_[v] = VotingSpace::xOrder(votes.px[v], parameters.bin_size);
   }
 
   void gather(const VotingSpace& space, std::size_t bin, Neighbourhood& n) {
@@ -314,7 +333,7 @@ class Search {
     const bool every_here_wanted = n.upper_bound >= every_from - kBoundMargin;
     double threshold = bar_now();
     for (std::uint32_t c : n.candidates) {
-      if (n.upper_bound < threshold - kBoundMargin)
+      if (fallsShort(n.upper_bound, threshold))
         return;  // nothing in this bin can be selected any more
       ++stats_.candidates;
       double objective;
@@ -381,7 +400,7 @@ class Search {
         bestVote(c, n, i, 0.0, std::numeric_limits<double>::infinity());
       achieved += best_[m];
       still_possible -= n.max_weight[i];
-      if (achieved + still_possible < threshold - kBoundMargin)
+      if (fallsShort(achieved + still_possible, threshold))
         return false;
     }
     objective = achieved;
@@ -434,13 +453,16 @@ class Search {
     double skip_beyond_squared = skipBeyond(best);
     // A run's votes are sorted by x: only those within the skip distance in x are looked at.
     for (std::uint32_t run = n.first_run[i]; run < n.first_run[i + 1]; ++run) {
+      // Runs are sorted by x at VotingSpace::xOrder's resolution: one step more either side.
       const double reach = std::sqrt(skip_beyond_squared) * (1.0 + 1e-9);
+      const std::int64_t lowest = VotingSpace::xOrder(cx - reach, bin_size_) - 1;
+      const std::int64_t highest = VotingSpace::xOrder(cx + reach, bin_size_) + 1;
       const auto [first, last] = n.runs[run];
       std::uint32_t k = static_cast<std::uint32_t>(
-          std::lower_bound(n.votes.begin() + first, n.votes.begin() + last, cx - reach,
-                           [&](std::uint32_t v, double x) { return votes_.px[v] < x; }) -
+          std::lower_bound(n.votes.begin() + first, n.votes.begin() + last, lowest,
+                           [&](std::uint32_t v, std::int64_t x) { return x_order_[v] < x; }) -
           n.votes.begin());
-      for (; k < last && votes_.px[n.votes[k]] <= cx + reach; ++k) {
+      for (; k < last && x_order_[n.votes[k]] <= highest; ++k) {
         const std::uint32_t v = n.votes[k];
         const double vote_distance_squared = squaredDistance(v, cx, cy, cz);
         if (vote_distance_squared >= skip_beyond_squared ||
@@ -532,6 +554,7 @@ class Search {
   const std::size_t max_comparisons_;
   const bool perfect_results_matter_;
   const bool compare_every_vote_;
+  const double bin_size_;
   const double support_radius_squared_;
   const double cos_half_max_angle_;
   const double sin_half_squared_max_angle_;
@@ -547,6 +570,7 @@ class Search {
   std::vector<int> inputs_here_;
   std::vector<double> position_;
   std::vector<double> orientation_;
+  std::vector<std::int64_t> x_order_;  // per vote, VotingSpace::xOrder of its x
 };
 
 struct AssignmentHash {
@@ -682,9 +706,9 @@ void checkInputs(const Ism& ism, const std::vector<IsmInput>& inputs,
   }
 }
 
-void setVote(Votes& votes, std::size_t v, const IsmInput& input, const Pose& relative) {
-  const Eigen::Vector3d position = input.pose.position + input.pose.orientation * relative.position;
-  const Eigen::Quaterniond orientation = input.pose.orientation * relative.orientation;
+void setVote(Votes& votes, std::size_t v, const Pose& input, double weight, const Pose& relative) {
+  const Eigen::Vector3d position = input.position + input.orientation * relative.position;
+  const Eigen::Quaterniond orientation = input.orientation * relative.orientation;
   // Where the member stands in the reference's frame: the position of inverse(relative).
   const Eigen::Vector3d member = -(relative.orientation.conjugate() * relative.position);
   votes.px[v] = position.x();
@@ -694,17 +718,80 @@ void setVote(Votes& votes, std::size_t v, const IsmInput& input, const Pose& rel
   votes.qx[v] = orientation.x();
   votes.qy[v] = orientation.y();
   votes.qz[v] = orientation.z();
-  votes.weight[v] = input.weight;
-  votes.ox[v] = input.pose.position.x();
-  votes.oy[v] = input.pose.position.y();
-  votes.oz[v] = input.pose.position.z();
+  votes.weight[v] = weight;
+  votes.ox[v] = input.position.x();
+  votes.oy[v] = input.position.y();
+  votes.oz[v] = input.position.z();
   votes.mx[v] = member.x();
   votes.my[v] = member.y();
   votes.mz[v] = member.z();
 }
 
-// Every input combined with every relative pose of its member.
-Votes castVotes(const Ism& ism, const std::vector<IsmInput>& inputs) {
+// The frame the search works in, derived from the inputs alone, so that a rigid motion of all
+// inputs moves it with them: the bins, and with them every work count, stay the same (up to
+// rounding of the coordinates, which matters only where a vote or a compared value lies within
+// it of a bin border or a threshold). Its axes are those of an anchor input, its origin half a
+// bin from the anchor along each axis, so that the anchor, which is usually the reference object
+// voting where it is, lies at the centre of its bin. The anchor is the input of the lowest member
+// (the reference first) with the largest weight, nearest the inputs' centroid, then the first
+// in input order; weights and distances within 1e-9 count as equal, so that rounding does not
+// decide. Not covered: inputs whose weights or distances differ by about 1e-9 (rounding can
+// pick either anchor), and ties left to input order when the inputs come reordered.
+class SearchFrame {
+ public:
+  SearchFrame(const Ism& ism, const std::vector<IsmInput>& inputs, double bin_size)
+      : centre_offset_(Eigen::Vector3d::Constant(0.5 * bin_size)) {
+    if (inputs.empty())
+      return;
+    const Pose& anchor = inputs[anchorInput(ism, inputs)].pose;
+    origin_ = anchor.position;
+    axes_ = anchor.orientation;
+  }
+
+  Pose fromWorld(const Pose& pose) const {
+    return Pose(axes_.conjugate() * (pose.position - origin_) + centre_offset_,
+                axes_.conjugate() * pose.orientation);
+  }
+  Pose toWorld(const Pose& pose) const {
+    return Pose(axes_ * (pose.position - centre_offset_) + origin_, axes_ * pose.orientation);
+  }
+
+ private:
+  static std::size_t anchorInput(const Ism& ism, const std::vector<IsmInput>& inputs) {
+    constexpr double kTie = 1e-9;
+    const int reference = referenceMember(ism);
+    // The reference member ranks first, the others by index.
+    const auto rank = [&](int member) { return member == reference ? -1 : member; };
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const IsmInput& input : inputs)
+      centroid += input.pose.position;
+    centroid /= static_cast<double>(inputs.size());
+    std::size_t anchor = 0;
+    double anchor_distance = (inputs[0].pose.position - centroid).norm();
+    for (std::size_t i = 1; i < inputs.size(); ++i) {
+      const IsmInput& input = inputs[i];
+      const IsmInput& best = inputs[anchor];
+      const double distance = (input.pose.position - centroid).norm();
+      const bool better =
+          rank(input.member) != rank(best.member)       ? rank(input.member) < rank(best.member)
+          : std::abs(input.weight - best.weight) > kTie ? input.weight > best.weight
+                                                        : distance < anchor_distance - kTie;
+      if (better) {
+        anchor = i;
+        anchor_distance = distance;
+      }
+    }
+    return anchor;
+  }
+
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond axes_ = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d centre_offset_;
+};
+
+// Every input (at its pose in the search frame) combined with every relative pose of its member.
+Votes castVotes(const Ism& ism, const std::vector<IsmInput>& inputs,
+                const std::vector<Pose>& poses) {
   std::size_t vote_count = 0;
   for (const IsmInput& input : inputs)
     vote_count += ism.members[input.member].relative_poses.size();
@@ -714,7 +801,7 @@ Votes castVotes(const Ism& ism, const std::vector<IsmInput>& inputs) {
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const auto& relative_poses = ism.members[inputs[i].member].relative_poses;
     for (std::size_t r = 0; r < relative_poses.size(); ++r, ++v) {
-      setVote(cast, v, inputs[i], relative_poses[r].reference_in_member);
+      setVote(cast, v, poses[i], inputs[i].weight, relative_poses[r].reference_in_member);
       cast.member[v] = inputs[i].member;
       cast.input[v] = static_cast<int>(i);
       cast.relative[v] = static_cast<int>(r);
@@ -752,19 +839,25 @@ std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar
   std::vector<std::size_t> bin_order(bin_count);
   std::iota(bin_order.begin(), bin_order.end(), 0);
   // Among equal bounds, bins with a vote of the reference first: a perfect result found early
-  // prunes the rest. The order changes the speed only, never the answer.
+  // prunes the rest. The order changes the speed only, never the answer. Bounds are compared by
+  // level: weights that are child ISMs' objectives differ in their last bits from frame to
+  // frame, and bins with equal bounds must keep their order (by cell) in every frame.
   std::stable_sort(bin_order.begin(), bin_order.end(), [&](std::size_t a, std::size_t b) {
     const Neighbourhood& x = neighbourhoods[a];
     const Neighbourhood& y = neighbourhoods[b];
-    if (x.upper_bound != y.upper_bound)
-      return x.upper_bound > y.upper_bound;
+    const std::int64_t level_x = objectiveLevel(x.upper_bound);
+    const std::int64_t level_y = objectiveLevel(y.upper_bound);
+    if (level_x != level_y)
+      return level_x > level_y;
     return x.holds_reference_vote && !y.holds_reference_vote;
   });
   // perfect_bound[i]: the highest bound of a bin with one input per member from position i on.
   std::vector<double> perfect_bound(bin_count + 1, kNoThreshold);
   for (std::size_t i = bin_count; i-- > 0;) {
     const Neighbourhood& n = neighbourhoods[bin_order[i]];
-    perfect_bound[i] = n.may_hold_perfect ? n.upper_bound : perfect_bound[i + 1];
+    // The running maximum: bounds within one level may come in either order.
+    perfect_bound[i] =
+        n.may_hold_perfect ? std::max(n.upper_bound, perfect_bound[i + 1]) : perfect_bound[i + 1];
   }
   std::vector<Hypothesis> found;
   for (std::size_t i = 0; i < bin_count; ++i) {
@@ -780,12 +873,13 @@ std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar
   return found;
 }
 
-IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, std::vector<int> atoms) {
+IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, const SearchFrame& frame,
+                   std::vector<int> atoms) {
   const int c = hypothesis.candidate;
   IsmResult result;
   result.reference_pose =
-      Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
-           Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c]));
+      frame.toWorld(Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
+                         Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c])));
   result.objective = hypothesis.objective;
   // Inputs that stand for themselves (negative atoms) sort first; report real estimates only.
   result.estimates.assign(std::lower_bound(atoms.begin(), atoms.end(), 0), atoms.end());
@@ -831,6 +925,7 @@ struct PoseKeyHash {
 // whose estimates a better result uses too: at the root any better result, below it a perfect
 // one (see Bar). Besides, every hypothesis reaching `every_result_from`, one per pose.
 std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes& votes,
+                                     const SearchFrame& frame,
                                      const std::vector<std::vector<int>>& atoms_of_input,
                                      const IsmResultSelection& selection) {
   std::sort(found.begin(), found.end(), [&](const Hypothesis& a, const Hypothesis& b) {
@@ -840,7 +935,7 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
       return level_a > level_b;
     return votes.keyLess(a.candidate, b.candidate);
   });
-  const double every_from = selection.every_result_from - kBoundMargin;
+
   std::vector<IsmResult> results;
   std::size_t best_taken = 0;
   std::unordered_map<std::vector<int>, bool, AssignmentHash> seen;
@@ -849,8 +944,8 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
   const bool wants_every = std::isfinite(selection.every_result_from);
   for (Hypothesis& hypothesis : found) {
     const bool capped = selection.best_count > 0 && best_taken >= selection.best_count;
-    if ((capped && hypothesis.objective < every_from) ||
-        hypothesis.objective < selection.at_least - kBoundMargin)
+    const bool reaches_every_from = !fallsShort(hypothesis.objective, selection.every_result_from);
+    if ((capped && !reaches_every_from) || fallsShort(hypothesis.objective, selection.at_least))
       break;  // sorted: nothing later is wanted
     std::vector<int> atoms = unionOfAtoms(hypothesis.assignment, atoms_of_input);
     bool as_best = false;
@@ -859,17 +954,17 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
         return std::includes(better.begin(), better.end(), atoms.begin(), atoms.end());
       });
     }
-    // Poses matter only where every result reaching every_from is wanted.
+    // Poses matter only where every result reaching every_result_from is wanted.
     const bool pose_new =
         wants_every && poses_taken.insert(poseKey(votes, hypothesis.candidate)).second;
-    if (!as_best && !(hypothesis.objective >= every_from && pose_new))
+    if (!as_best && !(reaches_every_from && pose_new))
       continue;
     if (as_best) {
       ++best_taken;
       if (selection.best_count == 0 || hypothesis.perfect)
         kept_atoms.push_back(atoms);
     }
-    results.push_back(resultOf(hypothesis, votes, std::move(atoms)));
+    results.push_back(resultOf(hypothesis, votes, frame, std::move(atoms)));
   }
   return results;
 }
@@ -881,7 +976,12 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
                                     const IsmResultSelection& selection,
                                     IsmRecognitionStats* stats) {
   checkInputs(ism, inputs, parameters);
-  const Votes cast = castVotes(ism, inputs);
+  const SearchFrame frame(ism, inputs, parameters.bin_size);
+  std::vector<Pose> poses;
+  poses.reserve(inputs.size());
+  for (const IsmInput& input : inputs)
+    poses.push_back(frame.fromWorld(input.pose));
+  const Votes cast = castVotes(ism, inputs, poses);
   const VotingSpace space(parameters.bin_size, cast.px.data(), cast.py.data(), cast.pz.data(),
                           cast.px.size());
   const Votes votes = sortedByBin(cast, space);
@@ -900,7 +1000,7 @@ std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>&
     stats->comparisons += local_stats.comparisons;
     stats->neighbourhood_votes += local_stats.neighbourhood_votes;
   }
-  return selectResults(found, votes, atoms_of_input, selection);
+  return selectResults(found, votes, frame, atoms_of_input, selection);
 }
 
 }  // namespace asr_ism

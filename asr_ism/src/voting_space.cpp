@@ -10,17 +10,16 @@ namespace asr_ism {
 namespace {
 
 constexpr int kCellBits = 21;
-constexpr std::int64_t kCellOffset = std::int64_t{1} << (kCellBits - 1);
 constexpr std::uint64_t kCellMask = (std::uint64_t{1} << kCellBits) - 1;
 
+// Cells relative to the space's origin cell, each in [0, 2^kCellBits).
 std::uint64_t packCell(std::int64_t cx, std::int64_t cy, std::int64_t cz) {
-  return (static_cast<std::uint64_t>(cx + kCellOffset) << (2 * kCellBits)) |
-         (static_cast<std::uint64_t>(cy + kCellOffset) << kCellBits) |
-         static_cast<std::uint64_t>(cz + kCellOffset);
+  return (static_cast<std::uint64_t>(cx) << (2 * kCellBits)) |
+         (static_cast<std::uint64_t>(cy) << kCellBits) | static_cast<std::uint64_t>(cz);
 }
 
 std::int64_t unpackCell(std::uint64_t key, int shift) {
-  return static_cast<std::int64_t>((key >> shift) & kCellMask) - kCellOffset;
+  return static_cast<std::int64_t>((key >> shift) & kCellMask);
 }
 
 std::uint64_t hashKey(std::uint64_t key) {
@@ -39,35 +38,62 @@ std::int64_t VotingSpace::cellOf(double coordinate, double bin_size) {
   return static_cast<std::int64_t>(std::floor(coordinate / bin_size));
 }
 
-double VotingSpace::maxCoordinate(double bin_size) {
-  // The constructor accepts cells in (-kCellOffset, kCellOffset - 1).
-  return static_cast<double>(kCellOffset - 2) * bin_size;
+std::int64_t VotingSpace::xOrder(double x, double bin_size) {
+  return std::llround(x / (1e-8 * bin_size));
+}
+
+double VotingSpace::maxSpread(double bin_size) {
+  // Cells are packed relative to the lowest, with one spare cell either side for neighbours;
+  // points this far apart lie at most kCellMask - 3 cells apart.
+  return static_cast<double>(kCellMask - 4) * bin_size;
 }
 
 VotingSpace::VotingSpace(double bin_size, const double* x, const double* y, const double* z,
                          std::size_t n) {
-  struct Entry {
-    std::uint64_t key;
-    double x;
-    std::uint32_t index;
-  };
-  std::vector<Entry> entries(n);
+  // Far enough below 2^63 that a cell index and its neighbours' fit a signed 64-bit integer.
+  const double max_cell = 0x1p60;
+  std::vector<std::array<std::int64_t, 3>> cells(n);
+  std::array<std::int64_t, 3> lowest = {0, 0, 0}, highest = {0, 0, 0}, origin;
   for (std::size_t i = 0; i < n; ++i) {
     const double coordinates[3] = {x[i], y[i], z[i]};
-    std::int64_t cells[3];
     for (int axis = 0; axis < 3; ++axis) {
       if (!std::isfinite(coordinates[axis])) {
         throw InputError("voting space: a vote position is not finite");
       }
-      cells[axis] = cellOf(coordinates[axis], bin_size);
-      if (cells[axis] <= -kCellOffset || cells[axis] >= kCellOffset - 1) {
+      if (!(std::abs(coordinates[axis] / bin_size) < max_cell)) {
         std::ostringstream message;
         message << "voting space: a vote at coordinate " << coordinates[axis]
                 << " m lies too far from the origin for bins of " << bin_size << " m";
         throw InputError(message.str());
       }
+      const std::int64_t cell = cellOf(coordinates[axis], bin_size);
+      cells[i][axis] = cell;
+      lowest[axis] = i == 0 ? cell : std::min(lowest[axis], cell);
+      highest[axis] = i == 0 ? cell : std::max(highest[axis], cell);
     }
-    entries[i] = {packCell(cells[0], cells[1], cells[2]), x[i], static_cast<std::uint32_t>(i)};
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (highest[axis] - lowest[axis] > static_cast<std::int64_t>(kCellMask) - 3) {
+      std::ostringstream message;
+      message << "voting space: votes spread over "
+              << static_cast<double>(highest[axis] - lowest[axis]) * bin_size
+              << " m along one axis, more than the " << maxSpread(bin_size) << " m bins of "
+              << bin_size << " m can hold";
+      throw InputError(message.str());
+    }
+    // Packed cells start at 1, so that the lowest cell's lower neighbour is 0, not negative.
+    origin[axis] = lowest[axis] - 1;
+  }
+  struct Entry {
+    std::uint64_t key;
+    std::int64_t x;
+    std::uint32_t index;
+  };
+  std::vector<Entry> entries(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    entries[i] = {
+        packCell(cells[i][0] - origin[0], cells[i][1] - origin[1], cells[i][2] - origin[2]),
+        xOrder(x[i], bin_size), static_cast<std::uint32_t>(i)};
   }
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
     if (a.key != b.key)

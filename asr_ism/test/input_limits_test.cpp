@@ -81,17 +81,17 @@ TEST(InputLimits, LearningRefusesAnOutlierPoseAndNamesTheStep) {
 }
 
 TEST(InputLimits, TheVotingExtentOfAcceptedInputFitsEveryAcceptedBinSize) {
-  // Property: for every bin size accepted and trees up to 90 levels whose relations are within
+  // Property: for every bin size accepted and trees up to 80 levels whose relations are within
   // the limit, the check passes, and every vote such a tree can cast fits the voting space.
   std::mt19937 random(7);
   std::uniform_real_distribution<double> exponent(std::log(kMinBinSize), std::log(kMaxBinSize));
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (int trial = 0; trial < 200; ++trial) {
     const double bin = std::exp(exponent(random));
-    const int height = 1 + trial % 90;
+    const int height = 1 + trial % 80;
     ASSERT_NO_THROW(checkVotingExtent(bin, height, kMaxRelationLength, "tree")) << bin;
-    // The farthest votes: an estimate at a corner of the accepted cube, moved by one relation
-    // per level straight outwards, all in one bin.
+    // The votes farthest apart: estimates at opposite corners of the accepted cube, each moved
+    // by one relation per level straight outwards, all in one space.
     const double corner = kMaxCoordinate + height * kMaxRelationLength;
     const double x[2] = {corner, -corner}, y[2] = {corner * unit(random), -corner},
                  z[2] = {-corner, corner};

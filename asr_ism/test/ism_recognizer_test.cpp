@@ -460,14 +460,18 @@ std::vector<IsmInput> randomCrowdedInputs(PortableRandom& random, const Ism& ism
   return inputs;
 }
 
+// The same results, with their poses moved by `motion` (identity: bit for bit, tolerance 0).
 void expectSameResults(const std::vector<IsmResult>& expected, const std::vector<IsmResult>& got,
-                       const std::string& where) {
+                       const std::string& where, const Pose& motion = Pose::identity(),
+                       double tolerance = 0.0) {
   ASSERT_EQ(expected.size(), got.size()) << where;
+  const auto near = [&](double a, double b) { return std::abs(a - b) <= tolerance; };
   for (std::size_t r = 0; r < expected.size(); ++r) {
-    EXPECT_EQ(expected[r].objective, got[r].objective) << where << ", result " << r;
-    EXPECT_EQ(expected[r].reference_pose.position, got[r].reference_pose.position) << where;
-    EXPECT_EQ(expected[r].reference_pose.orientation.coeffs(),
-              got[r].reference_pose.orientation.coeffs())
+    EXPECT_NEAR(expected[r].objective, got[r].objective, tolerance) << where << ", result " << r;
+    const Pose moved = compose(motion, expected[r].reference_pose);
+    EXPECT_LE((moved.position - got[r].reference_pose.position).norm(), tolerance) << where;
+    EXPECT_LE((moved.orientation.coeffs() - got[r].reference_pose.orientation.coeffs()).norm(),
+              tolerance)
         << where;
     EXPECT_EQ(expected[r].estimates, got[r].estimates) << where;
     ASSERT_EQ(expected[r].matches.size(), got[r].matches.size()) << where;
@@ -475,8 +479,8 @@ void expectSameResults(const std::vector<IsmResult>& expected, const std::vector
       const MemberMatch& a = expected[r].matches[m];
       const MemberMatch& b = got[r].matches[m];
       EXPECT_TRUE(a.input == b.input && a.relative_pose == b.relative_pose &&
-                  a.position_compliance == b.position_compliance &&
-                  a.orientation_compliance == b.orientation_compliance)
+                  near(a.position_compliance, b.position_compliance) &&
+                  near(a.orientation_compliance, b.orientation_compliance))
           << where << ", result " << r << ", member " << m;
     }
   }
@@ -514,6 +518,104 @@ TEST(IsmRecognizer, SkippingVotesThatCannotMatterChangesNoResult) {
   EXPECT_LT(compared, compared_every / 2);
   std::cout << "comparisons: " << compared << " against " << compared_every
             << " comparing every vote\n";
+}
+
+// A rigid motion of up to `max_shift` metres: a random turn about a random axis, or (one case in
+// four each) about the x, y or z axis alone.
+Pose randomRigidMotion(PortableRandom& random, double max_shift) {
+  const Eigen::Vector3d shift(random.signedUniform(0.0, max_shift),
+                              random.signedUniform(0.0, max_shift),
+                              random.signedUniform(0.0, max_shift));
+  const std::uint32_t kind = random.below(4);
+  const double angle = random.uniform(-M_PI, M_PI);
+  const Eigen::Quaterniond turn =
+      kind == 3 ? randomTurn(random, M_PI)
+                : Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::Unit(kind)));
+  return Pose(shift, turn.normalized());
+}
+
+std::vector<IsmInput> movedRigidly(std::vector<IsmInput> inputs, const Pose& motion) {
+  for (IsmInput& input : inputs)
+    input.pose = compose(motion, input.pose);
+  return inputs;
+}
+
+// Recognises, or says that the work limit was exceeded (no results, stats as far as counted).
+std::vector<IsmResult> recognizeOrGiveUp(const Ism& ism, const std::vector<IsmInput>& inputs,
+                                         const IsmResultSelection& selection,
+                                         IsmRecognitionStats& stats, bool& given_up) {
+  given_up = false;
+  try {
+    return recognizeIsm(ism, inputs, {}, selection, &stats);
+  } catch (const IsmWorkLimitExceeded&) {
+    given_up = true;
+    return {};
+  }
+}
+
+// Inputs as a recorded set gives them: every member once, exactly where one of its relative
+// poses puts it, so that votes of different members coincide up to rounding; weights as a
+// perfect child result's, a little below an integer.
+std::vector<IsmInput> randomExactInputs(PortableRandom& random, const Ism& ism) {
+  const Pose scene(Eigen::Vector3d(random.uniform(-2, 2), random.uniform(-2, 2), 0.8),
+                   randomTurn(random, M_PI));
+  std::vector<IsmInput> inputs;
+  for (int m = 0; m < static_cast<int>(ism.members.size()); ++m) {
+    const std::size_t relative = random.below(ism.members[m].relative_poses.size());
+    const double weight = random.uniform() < 0.5 ? 1.0 + random.below(3) - 3e-15 : 1.0;
+    inputs.push_back({m, memberPose(ism, m, scene, relative), weight, {}});
+  }
+  return inputs;
+}
+
+// The work of a recognition does not depend on where the world frame lies: the bin grid follows
+// the inputs (ism_recognizer.hpp), so the same scene moved rigidly, even hundreds of metres away
+// and turned about any axis, takes exactly as many votes, bins, candidates and comparisons, and a
+// comparisons cap gives up in every frame or in none. Results agree to rounding.
+TEST(IsmRecognizer, RigidMotionOfTheInputsChangesNoWorkCount) {
+  IsmResultSelection root, sub_ism, every, above, capped;
+  sub_ism.best_count = 4;
+  every.best_count = 4;
+  every.every_result_from = 1.0;
+  above.at_least = 1.5;
+  int limited = 0, completed = 0;
+  for (std::uint32_t seed = 1; seed <= 80; ++seed) {
+    PortableRandom random(seed);
+    const Ism ism = randomDemonstratedIsm(random);
+    const std::vector<IsmInput> inputs =
+        seed % 2 == 0 ? randomCrowdedInputs(random, ism) : randomExactInputs(random, ism);
+    IsmRecognitionStats unlimited;
+    recognizeIsm(ism, inputs, {}, sub_ism, &unlimited);
+    // A cap that stops the search halfway through in the original frame.
+    capped.best_count = 4;
+    capped.max_comparisons = unlimited.comparisons / 2;
+    for (const IsmResultSelection& selection : {root, sub_ism, every, above, capped}) {
+      IsmRecognitionStats expected_stats;
+      bool expected_given_up;
+      const auto expected =
+          recognizeOrGiveUp(ism, inputs, selection, expected_stats, expected_given_up);
+      (expected_given_up ? limited : completed) += 1;
+      for (double max_shift : {0.5, 5.0, 400.0}) {
+        const Pose motion = randomRigidMotion(random, max_shift);
+        const std::string where =
+            "seed " + std::to_string(seed) + ", shift up to " + std::to_string(max_shift) + " m";
+        IsmRecognitionStats stats;
+        bool given_up;
+        const auto got =
+            recognizeOrGiveUp(ism, movedRigidly(inputs, motion), selection, stats, given_up);
+        EXPECT_EQ(given_up, expected_given_up) << where;
+        expectSameResults(expected, got, where, motion, 1e-9);
+        EXPECT_EQ(stats.votes, expected_stats.votes) << where;
+        EXPECT_EQ(stats.bins, expected_stats.bins) << where;
+        EXPECT_EQ(stats.candidates, expected_stats.candidates) << where;
+        EXPECT_EQ(stats.comparisons, expected_stats.comparisons) << where;
+        EXPECT_EQ(stats.neighbourhood_votes, expected_stats.neighbourhood_votes) << where;
+      }
+    }
+  }
+  // Both outcomes of the cap were tried.
+  EXPECT_GT(limited, 0);
+  EXPECT_GT(completed, 0);
 }
 
 TEST(IsmRecognizer, InvalidParametersAndInputsAreRejected) {

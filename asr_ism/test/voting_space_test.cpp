@@ -57,8 +57,25 @@ TEST(VotingSpace, SortsPointsByBinDeterministically) {
 }
 
 TEST(VotingSpace, RejectsPointsOutsideItsRange) {
-  std::vector<double> x = {1e9}, y = {0.0}, z = {0.0};
-  EXPECT_THROW(VotingSpace(0.1, x.data(), y.data(), z.data(), 1), InputError);
+  std::vector<double> x = {0.0, 1e9}, y = {0.0, 0.0}, z = {0.0, 0.0};
+  EXPECT_THROW(VotingSpace(0.1, x.data(), y.data(), z.data(), 2), InputError);
+  std::vector<double> huge = {1e300};
+  EXPECT_THROW(VotingSpace(0.1, huge.data(), y.data(), z.data(), 1), InputError);
+}
+
+// Cells are packed relative to the lowest: far from the origin, points close together fit, and
+// the limit is how far apart they lie.
+TEST(VotingSpace, HoldsPointsFarFromTheOriginThatLieClose) {
+  const double bin = 0.1;
+  std::vector<double> x = {1e7, 1e7 + 0.05, 1e7 + 0.15}, y = {-3e6, -3e6, -3e6}, z(3, 0.0);
+  const VotingSpace space(bin, x.data(), y.data(), z.data(), x.size());
+  EXPECT_EQ(space.bins().size(), 2u);
+  std::array<int, 27> neighbours;
+  EXPECT_EQ(space.neighbourBins(0, neighbours), 2);
+  std::vector<double> apart = {0.0, 0.999 * VotingSpace::maxSpread(bin)};
+  EXPECT_NO_THROW(VotingSpace(bin, apart.data(), y.data(), z.data(), 2));
+  apart[1] = 1.001 * VotingSpace::maxSpread(bin);
+  EXPECT_THROW(VotingSpace(bin, apart.data(), y.data(), z.data(), 2), InputError);
 }
 
 }  // namespace

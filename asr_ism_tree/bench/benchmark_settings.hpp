@@ -21,6 +21,8 @@ struct BenchmarkSettings {
   /// Configurations (evenly spaced steps) recognised per synthetic demonstration.
   std::size_t synthetic_configurations = 20;
   std::uint32_t synthetic_seed = 1;
+  /// The clutter series' TreeRecognitionParameters::exact_search_max_votes; 0: its default.
+  std::size_t exact_search_max_votes = 0;
 };
 
 }  // namespace asr_ism_tree::bench

@@ -68,6 +68,8 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
   for (const auto& [topology, tree] : trees) {
     TreeRecognitionParameters parameters;
     parameters.max_estimates = clutterSizes().back();
+    if (settings.exact_search_max_votes > 0)
+      parameters.exact_search_max_votes = settings.exact_search_max_votes;
     const TreeRecognizer recognizer(tree, parameters);
     parameters.merge_repeated_detections = false;
     const TreeRecognizer exhaustive(tree, parameters);

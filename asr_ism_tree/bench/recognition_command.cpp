@@ -22,10 +22,12 @@ using asr_common::cli::UsageError;
 }  // namespace
 
 int runRecognitionCommand(const std::vector<std::string>& arguments) {
-  const CommandLine options(arguments, {"recordings", "threads", "synthetic-json"},
+  const CommandLine options(arguments, {"recordings", "threads", "synthetic-json", "max-votes"},
                             {"json", "no-synthetic", "no-clutter", "clutter-only"});
   BenchmarkSettings settings;
   settings.threads = static_cast<unsigned>(options.integer("threads", 1, 1, kMaxThreads));
+  settings.exact_search_max_votes =
+      static_cast<std::size_t>(options.integer("max-votes", 0, 0, 1LL << 40));
   const bool json = options.flag("json");
   const std::string synthetic_json = options.optional("synthetic-json", "");
   // In JSON mode stdout carries only the scene array, so the synthetic rows need a file.

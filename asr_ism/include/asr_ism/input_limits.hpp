@@ -19,7 +19,7 @@ using asr_common::kMinBinSize;
 void checkRecognitionParameters(const IsmRecognitionParameters& parameters,
                                 const std::string& what);
 
-/// How far from the origin votes can land when a tree of `height` levels whose longest relation
+/// How far apart votes of one ISM can land when a tree of `height` levels whose longest relation
 /// is `longest_relation` metres recognises estimates within kMaxCoordinate. Throws InputError
 /// naming `what` if that is beyond what a voting space with `bin_size` bins can hold.
 void checkVotingExtent(double bin_size, int height, double longest_relation,

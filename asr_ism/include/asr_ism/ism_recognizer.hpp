@@ -114,10 +114,12 @@ struct IsmRecognitionStats {
 /// the best is kept; `selection` says which of the rest are returned. Results come sorted by
 /// objective, best first. Objectives within 1e-9 of each other count as equal; such ties go to
 /// the hypothesis cast by the lower member (the reference first), then the lower input and
-/// relative pose, so that a rigid motion of all inputs, which moves the bin grid relative to
-/// them, does not change which hypothesis wins. Bins are searched in order of their objective's
-/// upper bound, and bins and hypotheses whose bound shows they cannot be selected are skipped.
-/// Deterministic.
+/// relative pose, so that where the bin grid falls does not change which hypothesis wins. Bins
+/// are searched in order of their objective's upper bound, and bins and hypotheses whose bound
+/// shows they cannot be selected are skipped. The bin grid is laid in a frame taken from one of
+/// the inputs (ism_recognizer.cpp, SearchFrame), so a rigid motion of all inputs moves the grid
+/// with them: the results move with the inputs, and every work count (IsmRecognitionStats, and
+/// so whether `max_comparisons` is exceeded) stays the same. Deterministic.
 std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
                                     const IsmRecognitionParameters& parameters,
                                     const IsmResultSelection& selection = {},

@@ -42,12 +42,14 @@ struct TreeRecognitionParameters {
   /// The exact search gives up (and the first evaluation's best stands) where it would cast more
   /// votes than this in one ISM: near-duplicate results of sub-ISMs that all could still matter
   /// multiply up the tree. TreeRecognitionStats::exact_searches_given_up counts such cases.
-  /// (5,000 before the vote search skipped votes below its floor: 20,000 lets the searches of
-  /// six of the ten kitchen scenes and office2016 complete in nearly every property case. Higher,
-  /// the comparisons cap below decides more often, and the comparisons a search makes depend on
-  /// where the bin grid falls: the same scene moved rigidly could then give up in one frame and
-  /// not in the other, as 60,000 did in Spuelkorb_3.)
-  std::size_t exact_search_max_votes = 20000;
+  /// (5,000 before the vote search skipped votes below its floor, 20,000 before the ISM search
+  /// binned votes in a frame taken from its inputs. Since then its work, and so whether the
+  /// comparisons cap below decides, does not depend on where the world frame lies, and the caps
+  /// below bound the work whatever this is. 60,000: on topology selection's test configurations
+  /// (`asr bench exact`, 2,000) the search gives up in 573 instead of 704, raising the best in
+  /// 156 more (gedeck by up to 0.020, Gedeck_Ende 0.035); 100,000 gives up in 3 fewer at 1.2-1.6
+  /// times gedeck's mean time. docs/recognition.md.)
+  std::size_t exact_search_max_votes = 60000;
   /// ... and where, over all its ISMs (and every assignment of id-less estimates), it would make
   /// more vote-to-hypothesis comparisons than this in one recognition: the bound on its work, so
   /// that no input can hold a caller for long (20-50 ns per comparison on the 2-core development
