@@ -1,6 +1,7 @@
 #include "object_subsets.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace asr_ism_tree {
 namespace {
@@ -33,14 +34,16 @@ void ObjectSubsetSearch::pushSubsetsOf(ObjectSet subset) {
     if (!contains(subset, object))
       continue;
     const ObjectSet smaller = subset & ~(ObjectSet{1} << object);
-    if (queued_.insert(smaller).second)
-      pending_.emplace(bound_(smaller), smaller);
+    if (queued_.insert(smaller).second) {
+      const double bound = bound_(smaller);
+      pending_.emplace(std::llround(bound / kMargin), smaller, bound);
+    }
   }
 }
 
 std::optional<ObjectSet> ObjectSubsetSearch::next() {
   while (!pending_.empty()) {
-    const auto [bound, subset] = *pending_.begin();
+    const auto [level, subset, bound] = *pending_.begin();
     if (bound <= bar())
       break;  // neither this one nor any after it can beat the best
     pending_.erase(pending_.begin());

@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -47,8 +48,9 @@ class ObjectSubsetSearch {
 
   const Bound bound_;
   double best_;
-  // By falling bound, then by set for a fixed order.
-  std::set<std::pair<double, ObjectSet>, std::greater<>> pending_;
+  // By falling bound (at 1e-9, so that rounding, which differs with where the world frame
+  // lies, cannot reorder them), then by set; with the bound itself.
+  std::set<std::tuple<std::int64_t, ObjectSet, double>, std::greater<>> pending_;
   std::set<ObjectSet> queued_;
   std::vector<ObjectSet> completed_;
 };
