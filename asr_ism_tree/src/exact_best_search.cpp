@@ -140,29 +140,47 @@ class Steps {
   std::size_t& left_;
 };
 
-// A pose at the resolution at which votes composed along the same chain coincide; q and -q are
-// one orientation.
-using PoseKey = std::array<std::int64_t, 7>;
-
-PoseKey poseKey(const Pose& pose) {
-  constexpr double kResolution = 1e-12;
-  const Eigen::Quaterniond& q = pose.orientation;
-  const double sign = q.w() < 0.0 ? -1.0 : 1.0;
-  const double values[7] = {pose.position.x(), pose.position.y(), pose.position.z(), sign * q.w(),
-                            sign * q.x(),      sign * q.y(),      sign * q.z()};
-  PoseKey key;
-  for (std::size_t i = 0; i < key.size(); ++i)
-    key[i] = std::llround(values[i] / kResolution);
-  return key;
-}
-
-struct PoseKeyHash {
-  std::size_t operator()(const PoseKey& key) const {
-    std::size_t hash = 1469598103934665603ULL;
-    for (std::int64_t value : key)
-      hash = (hash ^ static_cast<std::size_t>(value)) * 1099511628211ULL;
-    return hash;
+using Cell = std::array<std::int64_t, 3>;
+struct CellHash {
+  std::size_t operator()(const Cell& c) const {
+    return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
   }
+};
+
+// The poses a member's inputs already have, and those found: a pose counts as known within
+// rounding (which differs with where the world frame lies), so that the same pose composed along
+// another route or in another frame is not added twice.
+class KnownPoses {
+ public:
+  bool contains(const Pose& pose) const {
+    const Cell own = cellOf(pose.position);
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto found = cells_.find(Cell{own[0] + dx, own[1] + dy, own[2] + dz});
+          if (found != cells_.end() &&
+              std::any_of(found->second.begin(), found->second.end(),
+                          [&](const Pose& known) { return same(known, pose); }))
+            return true;
+        }
+      }
+    }
+    return false;
+  }
+  void insert(const Pose& pose) { cells_[cellOf(pose.position)].push_back(pose); }
+
+ private:
+  static constexpr double kCell = 1e-6;  // metres; rounding is far below
+  static bool same(const Pose& a, const Pose& b) {
+    return (a.position - b.position).norm() <= 1e-9 &&
+           std::abs(a.orientation.dot(b.orientation)) >= 1.0 - 1e-12;
+  }
+  static Cell cellOf(const Eigen::Vector3d& p) {
+    return {static_cast<std::int64_t>(std::floor(p.x() / kCell)),
+            static_cast<std::int64_t>(std::floor(p.y() / kCell)),
+            static_cast<std::int64_t>(std::floor(p.z() / kCell))};
+  }
+  std::unordered_map<Cell, std::vector<Pose>, CellHash> cells_;
 };
 
 // The votes of the inputs that can be part of a result reaching `from`, by cell of the support
@@ -232,12 +250,6 @@ class EligibleVotes {
   }
 
  private:
-  using Cell = std::array<std::int64_t, 3>;
-  struct CellHash {
-    std::size_t operator()(const Cell& c) const {
-      return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
-    }
-  };
   struct Vote {
     Pose pose;
     int member;
@@ -321,21 +333,21 @@ bool poseGapCandidates(const IsmTree& tree, int ism, double from,
     if (eligible.mostReachable() < from - kMargin)
       return true;  // no hypothesis anywhere reaches `from`
     // Poses a member's inputs already have, and those found.
-    std::vector<std::unordered_set<PoseKey, PoseKeyHash>> known(model.members.size());
+    std::vector<KnownPoses> known(model.members.size());
     for (const asr_ism::IsmInput& input : inputs)
-      known[input.member].insert(poseKey(input.pose));
+      known[input.member].insert(input.pose);
     ChainPoses chains(tree, poses, estimates_of_object, steps);
     for (std::size_t m = 0; m < model.members.size(); ++m) {
       const auto& member = model.members[m];
       if (!member.isPlaceholder())
         continue;
       chains.forEach(member.child_ism, [&](const Pose& pose, int estimate) {
-        if (known[m].count(poseKey(pose)) > 0)
+        if (known[m].contains(pose))
           return;
         for (const auto& relative : member.relative_poses) {
           const Pose vote = steps.compose(pose, relative.reference_in_member);
           if (eligible.reachableAt(vote) >= from - kMargin) {
-            known[m].insert(poseKey(pose));
+            known[m].insert(pose);
             candidates.push_back({static_cast<int>(m), pose, estimate});
             return;
           }
