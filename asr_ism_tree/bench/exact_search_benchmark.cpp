@@ -127,8 +127,8 @@ int runExactSearchCommand(const std::vector<std::string>& arguments) {
       1LL << 50));
   parameters.diverse_results_passed_up = static_cast<std::size_t>(options.integer(
       "diverse", static_cast<long long>(parameters.diverse_results_passed_up), 0, 1 << 20));
-  parameters.object_subsets_max_comparisons = static_cast<std::size_t>(options.integer(
-      "subsets", static_cast<long long>(parameters.object_subsets_max_comparisons), 0, 1LL << 50));
+  parameters.object_subsets_max_work = static_cast<std::size_t>(options.integer(
+      "subsets", static_cast<long long>(parameters.object_subsets_max_work), 0, 1LL << 50));
   const std::size_t tests =
       static_cast<std::size_t>(options.integer("tests", 200, 1, kMaxTestCount));
   const std::string scene = options.optional("scene", "");

@@ -31,7 +31,7 @@ const char* const kUsage =
     "      by the complete tree with and without it (times, the work it spent, where it gave up\n"
     "      or raised the best), under its limits (default 60,000 votes, 5,000,000 comparisons;\n"
     "      where it gives up, K (32) pose-diverse results per sub-ISM are tried, 0: none, and\n"
-    "      subsets of the seen objects are recognised within S (5,000,000) comparisons, 0: "
+    "      subsets of the seen objects are recognised within S (20,000,000) units of work, 0: "
     "none).\n";
 
 }  // namespace

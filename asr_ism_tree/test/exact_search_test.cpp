@@ -185,7 +185,7 @@ TEST_F(ExactSearch, WhereItRunsOutThePoseDiverseEvaluationOnlyRaisesTheBest) {
   // search's, and reaches the exhaustive search's in most cases the first evaluation misses.
   TreeRecognitionParameters small_budget;
   small_budget.exact_search_max_comparisons = 300;
-  small_budget.object_subsets_max_comparisons = 0;  // the pose-diverse evaluation alone
+  small_budget.object_subsets_max_work = 0;  // the pose-diverse evaluation alone
   TreeRecognitionParameters without_diverse = small_budget;
   without_diverse.diverse_results_passed_up = 0;
   TreeRecognitionParameters few;

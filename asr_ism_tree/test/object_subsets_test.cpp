@@ -122,15 +122,15 @@ class SubsetsInATree : public ::testing::Test {
 TEST_F(SubsetsInATree, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingItWhereSearchesRunOut) {
   // Budgets so small that the exact search gives up in most cases, and no pose-diverse
   // evaluation: with the subsets recognised too, the object seen badly never scores lower than the
-  // object removed, wherever `object_subsets_max_comparisons` sufficed; without them, it does
+  // object removed, wherever `object_subsets_max_work` sufficed; without them, it does
   // somewhere.
   TreeRecognitionParameters small_budget;
   small_budget.exact_search_max_comparisons = 300;
   small_budget.diverse_results_passed_up = 0;  // else it hides the first best's shortfalls here
   TreeRecognitionParameters without_subsets = small_budget;
-  without_subsets.object_subsets_max_comparisons = 0;
+  without_subsets.object_subsets_max_work = 0;
   TreeRecognitionParameters one_subset = small_budget;
-  one_subset.object_subsets_max_comparisons = 1;
+  one_subset.object_subsets_max_work = 1;
   std::mt19937 random(17);
   int given_up = 0, cut = 0, raised = 0, lower_without = 0, cut_after_one = 0;
   for (int trial = 0; trial < 150; ++trial) {

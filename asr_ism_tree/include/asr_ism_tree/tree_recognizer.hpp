@@ -90,10 +90,12 @@ struct TreeRecognitionParameters {
   /// it). Subsets that cannot beat the best found (by their number of leaves) or that lie
   /// within one whose search completed are not recognised; each recognition has the budgets
   /// above, so its best is that of the configuration without the other objects. No further
-  /// subset is recognised once they made this many vote-to-hypothesis comparisons in all
-  /// (TreeRecognitionStats::object_subset_searches_cut: only there may the answer fall below
-  /// that with some object removed). 0: off.
-  std::size_t object_subsets_max_comparisons = 20000000;
+  /// subset is recognised once their work reaches this in all: vote-to-hypothesis comparisons
+  /// and pose-gap steps count 1 each, a vote cast 50 (casting, binning and gathering one costs
+  /// about 2 us on the development machine, a comparison or step 20-50 ns), so the cap is about
+  /// 0.4-1 s plus one subset's recognition (TreeRecognitionStats::object_subset_searches_cut:
+  /// only there may the answer fall below that with some object removed). 0: off.
+  std::size_t object_subsets_max_work = 20000000;
   /// Every sub-ISM passes every result up (of results at one pose, the best): the exhaustive
   /// search, slow beyond small scenes; what the exact search is tested against.
   bool pass_every_result = false;
@@ -134,13 +136,13 @@ struct TreeRecognitionStats {
   std::size_t diverse_comparisons = 0;
   /// Recognitions of subsets of the seen objects where the search over all gave up (over
   /// labellings), those whose best beat it, the labellings where
-  /// `object_subsets_max_comparisons` ran out before every subset that could beat the best was
-  /// recognised (there the answer may fall below that with some object removed), and the
-  /// comparisons those recognitions made.
+  /// `object_subsets_max_work` ran out before every subset that could beat the best was
+  /// recognised (there the answer may fall below that with some object removed), and the work
+  /// those recognitions made (as `object_subsets_max_work` counts it).
   std::size_t object_subset_searches = 0;
   std::size_t object_subsets_better = 0;
   std::size_t object_subset_searches_cut = 0;
-  std::size_t object_subset_comparisons = 0;
+  std::size_t object_subset_work = 0;
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
