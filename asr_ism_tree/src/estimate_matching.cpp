@@ -41,9 +41,10 @@ std::size_t EstimateMatching::labellingCount() const {
 std::vector<std::vector<int>> EstimateMatching::estimatesOfObjects(
     std::size_t index, std::size_t object_count, const std::vector<int>& estimate_order) const {
   // Labelling `index` read as a mixed-radix number, one digit per estimate with several
-  // candidates, in estimate order.
+  // candidates, in `estimate_order` (so that neither the input order nor where the world frame
+  // lies decides which labelling comes first).
   std::vector<int> chosen(candidates.size(), -1);
-  for (std::size_t e = 0; e < candidates.size(); ++e) {
+  for (int e : estimate_order) {
     const auto& objects = candidates[e];
     if (objects.empty())
       continue;

@@ -194,6 +194,10 @@ class EligibleVotes {
         radius_(parameters.supportRadius()),
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         best_(ism.members.size(), 0.0) {
+    if (!inputs.empty()) {
+      origin_ = inputs.front().pose.position;
+      into_frame_ = inputs.front().pose.orientation.conjugate();
+    }
     for (const asr_ism::IsmInput& input : inputs) {
       if (input.weight < member_from[input.member])
         continue;
@@ -266,7 +270,13 @@ class EligibleVotes {
     }
   }
 
-  Cell cellOf(const Eigen::Vector3d& p) const {
+  // Cells in the frame of the first input (the inputs come in an order the world frame does not
+  // change), so that the steps spent do not depend on where the world frame lies; that input at
+  // the centre of its cell, as votes often coincide with it (child results at their reference
+  // object's estimate) and rounding would put them on either side of a border.
+  Cell cellOf(const Eigen::Vector3d& world) const {
+    const Eigen::Vector3d p =
+        into_frame_ * (world - origin_) + Eigen::Vector3d::Constant(0.5 * radius_);
     return {static_cast<std::int64_t>(std::floor(p.x() / radius_)),
             static_cast<std::int64_t>(std::floor(p.y() / radius_)),
             static_cast<std::int64_t>(std::floor(p.z() / radius_))};
@@ -275,6 +285,8 @@ class EligibleVotes {
   Steps& steps_;
   const double radius_;
   const double cos_half_max_angle_;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond into_frame_ = Eigen::Quaterniond::Identity();
   std::vector<Vote> votes_;
   std::unordered_map<Cell, std::vector<int>, CellHash> cells_;
   std::unordered_set<Cell, CellHash> near_;  // the cells within one of a vote's

@@ -77,7 +77,8 @@ std::size_t representative(const Group& group, const std::vector<const asr_commo
     const double angle =
         asr_common::angleBetween(poses[member]->orientation, mean_orientation) / tolerance.angle;
     const double deviation = distance * distance + angle * angle;
-    if (deviation < best_deviation) {
+    // By more than rounding, which differs with where the world frame lies; else the earlier.
+    if (deviation < best_deviation - 1e-9) {
       best_deviation = deviation;
       best = member;
     }
@@ -85,22 +86,25 @@ std::size_t representative(const Group& group, const std::vector<const asr_commo
   return best;
 }
 
-// Positions in `estimates`, where detections are densest first (counted in cells of half the
-// distance tolerance, over the 27 cells around), ties in the given order: a group then opens at
-// the consensus of its repeats, not at their edge.
+// Positions in `estimates`, where detections are densest first (the number of detections within
+// `radius`, which a rigid motion of all of them does not change; the grid only finds them),
+// ties in the given order: a group then opens at the consensus of its repeats, not at their edge.
 std::vector<std::size_t> densestFirst(const std::vector<const asr_common::Pose*>& poses,
-                                      double cell_size) {
-  std::map<Cell, int> counts;
-  for (const asr_common::Pose* pose : poses)
-    ++counts[cellOf(pose->position, cell_size)];
+                                      double radius) {
+  std::map<Cell, std::vector<std::size_t>> cells;
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    cells[cellOf(poses[i]->position, radius)].push_back(i);
   std::vector<int> density(poses.size(), 0);
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    const Cell centre = cellOf(poses[i]->position, cell_size);
+    const Cell centre = cellOf(poses[i]->position, radius);
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto cell = counts.find({centre[0] + dx, centre[1] + dy, centre[2] + dz});
-          density[i] += cell == counts.end() ? 0 : cell->second;
+          const auto cell = cells.find({centre[0] + dx, centre[1] + dy, centre[2] + dz});
+          if (cell == cells.end())
+            continue;
+          for (std::size_t other : cell->second)
+            density[i] += (poses[other]->position - poses[i]->position).norm() <= radius ? 1 : 0;
         }
       }
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -173,7 +174,9 @@ std::vector<Pose> validatedPoses(const asr_common::Configuration& configuration)
   return poses;
 }
 
-// The estimates in a canonical order (by key, then pose), so the input order cannot matter.
+// The estimates in a canonical order, so that neither the input order nor where the world frame
+// lies can matter: by key, then by distance from the estimates' centroid at 1e-9 m (a rigid
+// motion changes it by rounding only), then by pose (for poses that far from a tie only).
 std::vector<int> canonicalOrder(const asr_common::Configuration& configuration,
                                 const std::vector<Pose>& poses) {
   std::vector<int> canonical(configuration.size());
@@ -186,6 +189,17 @@ std::vector<int> canonicalOrder(const asr_common::Configuration& configuration,
   };
   std::sort(canonical.begin(), canonical.end(),
             [&](int a, int b) { return sort_key(a) < sort_key(b); });
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (int i : canonical)  // summed in an order the input order cannot change
+    centroid += poses[i].position;
+  centroid /= std::max<double>(1.0, static_cast<double>(canonical.size()));
+  std::vector<std::int64_t> distance_level(canonical.size());
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    distance_level[i] = std::llround((poses[i].position - centroid).norm() / 1e-9);
+  std::stable_sort(canonical.begin(), canonical.end(), [&](int a, int b) {
+    return std::tie(configuration[a].key, distance_level[a]) <
+           std::tie(configuration[b].key, distance_level[b]);
+  });
   return canonical;
 }
 

@@ -204,55 +204,110 @@ WorkOutcome recognizeCounting(const TreeRecognizer& recognizer,
   return outcome;
 }
 
-void expectSameWork(const WorkOutcome& expected, const WorkOutcome& got, const std::string& what) {
+// Whether the comparisons counted differ (they alone may, by `comparisons_tolerance`).
+bool comparisonsDiffer(const WorkOutcome& expected, const WorkOutcome& got) {
+  return got.stats.exact_search_comparisons != expected.stats.exact_search_comparisons ||
+         got.stats.isms.comparisons != expected.stats.isms.comparisons ||
+         got.stats.object_subset_work != expected.stats.object_subset_work;
+}
+
+// `got` within `tolerance` (a fraction of `expected`; 0: equal).
+void expectCount(std::size_t got, std::size_t expected, double tolerance, const std::string& what) {
+  EXPECT_LE(std::abs(static_cast<double>(got) - static_cast<double>(expected)),
+            tolerance * static_cast<double>(expected))
+      << what << ": " << got << " against " << expected;
+}
+
+void expectSameWork(const WorkOutcome& expected, const WorkOutcome& got, const std::string& what,
+                    double comparisons_tolerance = 0.0) {
   EXPECT_NEAR(got.best, expected.best, 1e-9) << what;
   EXPECT_EQ(got.stats.exact_searches_given_up, expected.stats.exact_searches_given_up) << what;
   EXPECT_EQ(got.stats.pose_gaps_left_open, expected.stats.pose_gaps_left_open) << what;
-  EXPECT_EQ(got.stats.exact_search_comparisons, expected.stats.exact_search_comparisons) << what;
+  expectCount(got.stats.exact_search_comparisons, expected.stats.exact_search_comparisons,
+              comparisons_tolerance, what + ", exact search comparisons");
   EXPECT_EQ(got.stats.exact_search_votes, expected.stats.exact_search_votes) << what;
   EXPECT_EQ(got.stats.diverse_evaluations, expected.stats.diverse_evaluations) << what;
   EXPECT_EQ(got.stats.diverse_comparisons, expected.stats.diverse_comparisons) << what;
   EXPECT_EQ(got.stats.object_subset_searches, expected.stats.object_subset_searches) << what;
-  EXPECT_EQ(got.stats.object_subset_work, expected.stats.object_subset_work) << what;
-  EXPECT_EQ(got.stats.isms.comparisons, expected.stats.isms.comparisons) << what;
+  expectCount(got.stats.object_subset_work, expected.stats.object_subset_work,
+              comparisons_tolerance, what + ", object subset work");
+  expectCount(got.stats.isms.comparisons, expected.stats.isms.comparisons, comparisons_tolerance,
+              what + ", comparisons");
   EXPECT_EQ(got.stats.isms.votes, expected.stats.isms.votes) << what;
   EXPECT_EQ(got.stats.isms.bins, expected.stats.isms.bins) << what;
   EXPECT_EQ(got.stats.isms.candidates, expected.stats.isms.candidates) << what;
+  EXPECT_EQ(got.stats.isms.neighbourhood_votes, expected.stats.isms.neighbourhood_votes) << what;
+  EXPECT_EQ(got.stats.root_results, expected.stats.root_results) << what;
+  EXPECT_EQ(got.stats.merged_estimates, expected.stats.merged_estimates) << what;
+  EXPECT_EQ(got.stats.repeat_searches_given_up, expected.stats.repeat_searches_given_up) << what;
+  EXPECT_EQ(got.stats.pose_steps, expected.stats.pose_steps) << what;
+  EXPECT_EQ(got.stats.exact_searches_proven_by_bound, expected.stats.exact_searches_proven_by_bound)
+      << what;
+  EXPECT_EQ(got.stats.relaxed_bound_work, expected.stats.relaxed_bound_work) << what;
+  EXPECT_EQ(got.stats.diverse_evaluations_better, expected.stats.diverse_evaluations_better)
+      << what;
+  EXPECT_EQ(got.stats.diverse_evaluations_given_up, expected.stats.diverse_evaluations_given_up)
+      << what;
+  EXPECT_EQ(got.stats.object_subsets_better, expected.stats.object_subsets_better) << what;
+  EXPECT_EQ(got.stats.object_subset_searches_cut, expected.stats.object_subset_searches_cut)
+      << what;
 }
+
+// How often the caps of expectWorkIndependentOfTheWorldFrame() decided.
+struct CapsDecided {
+  int comparisons = 0;         // the exact search gave up, or its second pass ran out
+  int pose_steps = 0;          // the pose gap was left open
+  int comparisons_differ = 0;  // recognitions whose comparisons differed from the original's
+};
 
 // Whether the exact search gives up, and its work, do not depend on where the world frame lies:
 // each ISM bins its votes in a frame taken from its inputs (asr_ism/ism_recognizer.hpp). Recorded
 // sets with one object seen badly, moved rigidly up to 300 m and turned about every axis; once
-// with the default caps and once with a comparisons cap of half what the search took, so that
-// the cap decides. Returns how many capped recognitions gave up.
-int expectWorkIndependentOfTheWorldFrame(const IsmTree& tree, const std::string& name,
-                                         const std::vector<Configuration>& sets,
-                                         std::mt19937& random) {
+// with the default caps, once with a comparisons cap of half what the search took, so that
+// the cap decides, and, where the pose gap was sought, once with half its steps.
+CapsDecided expectWorkIndependentOfTheWorldFrame(const IsmTree& tree, const std::string& name,
+                                                 const std::vector<Configuration>& sets,
+                                                 std::mt19937& random,
+                                                 double comparisons_tolerance = 0.0) {
   const TreeRecognizer recognizer(tree);
-  int capped_given_up = 0;
+  CapsDecided decided;
   for (std::size_t set = 0; set < sets.size(); ++set) {
     const WorkOutcome original = recognizeCounting(recognizer, sets[set]);
-    TreeRecognitionParameters small_cap;
+    TreeRecognitionParameters small_cap, few_pose_steps;
     small_cap.exact_search_max_comparisons = original.stats.exact_search_comparisons / 2;
+    few_pose_steps.exact_search_max_pose_steps = original.stats.pose_steps / 2;
     const TreeRecognizer capped(tree, small_cap);
+    const TreeRecognizer pose_capped(tree, few_pose_steps);
     const WorkOutcome capped_original = recognizeCounting(capped, sets[set]);
+    const bool seeks_poses = original.stats.pose_steps > 1;
+    const WorkOutcome pose_capped_original =
+        seeks_poses ? recognizeCounting(pose_capped, sets[set]) : WorkOutcome{};
     // The cap decides where the search gives up, or where it completes but runs out in its
     // second pass (seeking the poses of the pose gap, exact_best_search.hpp).
-    capped_given_up +=
+    decided.comparisons +=
         capped_original.stats.exact_searches_given_up + capped_original.stats.pose_gaps_left_open >
                 0
             ? 1
             : 0;
+    decided.pose_steps += pose_capped_original.stats.pose_gaps_left_open > 0 ? 1 : 0;
     for (double max_shift : {1.0, 300.0}) {
       const Pose motion = randomRigidMotion(random, max_shift);
       const Configuration moved = movedRigidly(sets[set], motion);
       const std::string what = name + ", set " + std::to_string(set) + ", shift up to " +
                                std::to_string(max_shift) + " m";
-      expectSameWork(original, recognizeCounting(recognizer, moved), what);
-      expectSameWork(capped_original, recognizeCounting(capped, moved), what + ", small cap");
+      const auto expectSame = [&](const WorkOutcome& expected, const TreeRecognizer& again,
+                                  const std::string& how) {
+        const WorkOutcome got = recognizeCounting(again, moved);
+        expectSameWork(expected, got, what + how, comparisons_tolerance);
+        decided.comparisons_differ += comparisonsDiffer(expected, got) ? 1 : 0;
+      };
+      expectSame(original, recognizer, "");
+      expectSame(capped_original, capped, ", small cap");
+      if (seeks_poses)
+        expectSame(pose_capped_original, pose_capped, ", few pose steps");
     }
   }
-  return capped_given_up;
+  return decided;
 }
 
 TEST_P(RecordedScene, WorkDoesNotDependOnWhereTheWorldFrameLies) {
@@ -272,8 +327,10 @@ TEST_P(RecordedScene, WorkDoesNotDependOnWhereTheWorldFrameLies) {
                     std::uniform_real_distribution<double>(0.05, 1.0)(random));
       sets.push_back(configuration);
     }
-    capped_given_up += expectWorkIndependentOfTheWorldFrame(
-        tree, std::string(GetParam().scene) + " " + topology + " tree", sets, random);
+    capped_given_up +=
+        expectWorkIndependentOfTheWorldFrame(
+            tree, std::string(GetParam().scene) + " " + topology + " tree", sets, random)
+            .comparisons;
     cases += static_cast<int>(sets.size());
   }
   std::cout << GetParam().scene << ": the small comparisons cap decided in " << capped_given_up
@@ -306,12 +363,87 @@ TEST(SyntheticScene, WorkDoesNotDependOnWhereTheWorldFrameLies) {
       }
       sets.push_back(configuration);
     }
-    capped_given_up += expectWorkIndependentOfTheWorldFrame(tree, "synthetic", sets, random);
+    capped_given_up +=
+        expectWorkIndependentOfTheWorldFrame(tree, "synthetic", sets, random).comparisons;
     cases += static_cast<int>(sets.size());
   }
   std::cout << "synthetic: the small comparisons cap decided in " << capped_given_up << " of "
             << cases << " cases\n";
   EXPECT_GT(capped_given_up, 0);
+}
+
+// With repeated detections and estimates without an id, the order among several estimates of
+// one object, how they are merged and what the pose gap costs do not depend on where the world
+// frame lies either (docs/recognition.md). A synthetic table with two cups, star and complete
+// trees; each object seen up to four times, jittered by up to 2 cm / 4 deg, a cup's estimates
+// without their id with odds 1/3 (at most three such, so at most 8 labellings). Everything is
+// equal but the comparisons, which may differ by a few in a thousand: an ISM evaluation with
+// the same inputs in the same order (weights equal to 1e-12) made 279 comparisons in one frame
+// and 278 in another, in the ISM search itself (asr_ism), not yet explained.
+TEST(SyntheticScene, WorkWithRepeatedDetectionsDoesNotDependOnWhereTheWorldFrameLies) {
+  constexpr double kComparisonsTolerance = 0.005;
+  const std::vector<asr_common::ObjectKey> objects = {
+      {"Plate", "1"}, {"Cup", "1"}, {"Cup", "2"}, {"Knife", "1"}, {"Fork", "1"}, {"Napkin", "1"}};
+  const asr_ism::Demonstration demonstration = synthetic::demonstration("table", objects, 6);
+  std::mt19937 random(8);
+  std::normal_distribution<double> gaussian(0.0, 1.0);
+  CapsDecided decided;
+  int cases = 0;
+  std::size_t merged = 0, labellings = 0;
+  for (const RelationTopology& topology :
+       {RelationTopology::star(objects, 0), RelationTopology::complete(objects)}) {
+    const IsmTree tree = generateIsmTree(demonstration, topology, {});
+    std::vector<Configuration> sets;
+    for (int trial = 0; trial < 10; ++trial) {
+      const std::size_t step =
+          std::uniform_int_distribution<std::size_t>(0, demonstration.stepCount() - 1)(random);
+      const double metres = std::uniform_real_distribution<double>(0.002, 0.02)(random);
+      const double radians = std::uniform_real_distribution<double>(0.5, 4.0)(random) * kDegree;
+      Configuration configuration;
+      int without_id = 0;
+      for (const asr_common::ObjectEstimate& recorded : demonstration.configuration(step)) {
+        const int copies = std::uniform_int_distribution<int>(0, 4)(random);  // 0: not seen
+        for (int copy = 0; copy < copies; ++copy) {
+          asr_common::ObjectEstimate estimate = recorded;
+          estimate.pose.position +=
+              metres * Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random));
+          const Eigen::Vector3d axis(gaussian(random), gaussian(random), gaussian(random));
+          estimate.pose.orientation =
+              (estimate.pose.orientation *
+               Eigen::Quaterniond(Eigen::AngleAxisd(radians * gaussian(random), axis.normalized())))
+                  .normalized();
+          if (estimate.key.type == "Cup" && without_id < 3 &&
+              std::uniform_int_distribution<int>(0, 2)(random) == 0) {
+            estimate.key.id = "";
+            ++without_id;
+          }
+          configuration.push_back(estimate);
+        }
+      }
+      labellings += std::size_t{1} << without_id;
+      sets.push_back(configuration);
+    }
+    for (const Configuration& set : sets) {
+      TreeRecognitionStats stats;
+      TreeRecognizer(tree).recognize(set, &stats);
+      merged += stats.merged_estimates;
+    }
+    const CapsDecided here = expectWorkIndependentOfTheWorldFrame(
+        tree, std::string("repeats, ") + (topology.relationCount() == 5 ? "star" : "complete"),
+        sets, random, kComparisonsTolerance);
+    decided.comparisons += here.comparisons;
+    decided.pose_steps += here.pose_steps;
+    decided.comparisons_differ += here.comparisons_differ;
+    cases += static_cast<int>(sets.size());
+  }
+  std::cout << "repeats: " << merged << " estimates merged, " << labellings
+            << " labellings; the small comparisons cap decided in " << decided.comparisons << " of "
+            << cases << " cases, half the pose steps in " << decided.pose_steps
+            << "; comparisons differed in " << decided.comparisons_differ << " recognitions\n";
+  EXPECT_GT(merged, 0u);
+  EXPECT_GT(labellings, static_cast<std::size_t>(cases));
+  EXPECT_GT(decided.comparisons, 0);
+  EXPECT_GT(decided.pose_steps, 0);
 }
 
 // The example: in office2016 (complete tree), a marker turned about 30 deg scored 0.57

@@ -23,7 +23,8 @@ struct EstimateMatching {
   /// How many ways there are to give every estimate one of its candidates.
   std::size_t labellingCount() const;
   /// Labelling `index` (0 <= index < labellingCount()): per object, the estimates that stand for
-  /// it, in the order of `estimate_order`.
+  /// it, in the order of `estimate_order` (every estimate, once), which also orders the digits
+  /// of `index`.
   std::vector<std::vector<int>> estimatesOfObjects(std::size_t index, std::size_t object_count,
                                                    const std::vector<int>& estimate_order) const;
 };

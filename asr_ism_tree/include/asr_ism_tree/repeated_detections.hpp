@@ -13,13 +13,14 @@ struct RepeatedDetectionTolerance {
 };
 
 /// Merges repeated detections of one object: `estimates` (indices into `poses`, in a canonical
-/// order) are taken where they are densest first (counted in cells of half the distance
-/// tolerance; ties in the given order), each joining the first group whose first estimate lies
-/// within `tolerance` of it, or opening a group; each group is represented by the estimate
-/// nearest to its mean pose (distance and angle in units of the tolerance; the first of equals).
-/// Returns the representatives in the given order. Estimates farther apart than the tolerance
-/// are all kept, in the given order. Linear in the number of estimates where they form few
-/// groups per region of the tolerance's size.
+/// order) are taken where they are densest first (the number of estimates within half the
+/// distance tolerance; ties in the given order), each joining the first group whose first
+/// estimate lies within `tolerance` of it, or opening a group; each group is represented by the
+/// estimate nearest to its mean pose (distance and angle in units of the tolerance; the first of
+/// those within 1e-9 of each other). Returns the representatives in the given order. Estimates
+/// farther apart than the tolerance are all kept, in the given order. Nothing depends on where
+/// the world frame lies but through rounding at the thresholds. Linear in the number of
+/// estimates where they form few groups per region of the tolerance's size.
 std::vector<int> mergeRepeatedDetections(const std::vector<int>& estimates,
                                          const std::vector<asr_common::Pose>& poses,
                                          const RepeatedDetectionTolerance& tolerance);
