@@ -20,7 +20,8 @@ struct RepeatedDetectionTolerance {
 /// those within 1e-9 of each other). Returns the representatives in the given order. Estimates
 /// farther apart than the tolerance are all kept, in the given order. Nothing depends on where
 /// the world frame lies but through rounding at the thresholds. Linear in the number of
-/// estimates where they form few groups per region of the tolerance's size.
+/// estimates where few lie within half the tolerance of one another, quadratic in those that do
+/// (the density is counted exactly).
 std::vector<int> mergeRepeatedDetections(const std::vector<int>& estimates,
                                          const std::vector<asr_common::Pose>& poses,
                                          const RepeatedDetectionTolerance& tolerance);
