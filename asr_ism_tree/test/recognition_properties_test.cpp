@@ -204,42 +204,21 @@ WorkOutcome recognizeCounting(const TreeRecognizer& recognizer,
   return outcome;
 }
 
-// Whether the comparisons counted (or the votes looked at around hypotheses) differ: they alone
-// may, by `comparisons_tolerance`.
-bool comparisonsDiffer(const WorkOutcome& expected, const WorkOutcome& got) {
-  return got.stats.exact_search_comparisons != expected.stats.exact_search_comparisons ||
-         got.stats.isms.comparisons != expected.stats.isms.comparisons ||
-         got.stats.isms.neighbourhood_votes != expected.stats.isms.neighbourhood_votes ||
-         got.stats.object_subset_work != expected.stats.object_subset_work;
-}
-
-// `got` within `tolerance` (a fraction of `expected`; 0: equal).
-void expectCount(std::size_t got, std::size_t expected, double tolerance, const std::string& what) {
-  EXPECT_LE(std::abs(static_cast<double>(got) - static_cast<double>(expected)),
-            tolerance * static_cast<double>(expected))
-      << what << ": " << got << " against " << expected;
-}
-
-void expectSameWork(const WorkOutcome& expected, const WorkOutcome& got, const std::string& what,
-                    double comparisons_tolerance = 0.0) {
+void expectSameWork(const WorkOutcome& expected, const WorkOutcome& got, const std::string& what) {
   EXPECT_NEAR(got.best, expected.best, 1e-9) << what;
   EXPECT_EQ(got.stats.exact_searches_given_up, expected.stats.exact_searches_given_up) << what;
   EXPECT_EQ(got.stats.pose_gaps_left_open, expected.stats.pose_gaps_left_open) << what;
-  expectCount(got.stats.exact_search_comparisons, expected.stats.exact_search_comparisons,
-              comparisons_tolerance, what + ", exact search comparisons");
+  EXPECT_EQ(got.stats.exact_search_comparisons, expected.stats.exact_search_comparisons) << what;
   EXPECT_EQ(got.stats.exact_search_votes, expected.stats.exact_search_votes) << what;
   EXPECT_EQ(got.stats.diverse_evaluations, expected.stats.diverse_evaluations) << what;
   EXPECT_EQ(got.stats.diverse_comparisons, expected.stats.diverse_comparisons) << what;
   EXPECT_EQ(got.stats.object_subset_searches, expected.stats.object_subset_searches) << what;
-  expectCount(got.stats.object_subset_work, expected.stats.object_subset_work,
-              comparisons_tolerance, what + ", object subset work");
-  expectCount(got.stats.isms.comparisons, expected.stats.isms.comparisons, comparisons_tolerance,
-              what + ", comparisons");
+  EXPECT_EQ(got.stats.object_subset_work, expected.stats.object_subset_work) << what;
+  EXPECT_EQ(got.stats.isms.comparisons, expected.stats.isms.comparisons) << what;
   EXPECT_EQ(got.stats.isms.votes, expected.stats.isms.votes) << what;
   EXPECT_EQ(got.stats.isms.bins, expected.stats.isms.bins) << what;
   EXPECT_EQ(got.stats.isms.candidates, expected.stats.isms.candidates) << what;
-  expectCount(got.stats.isms.neighbourhood_votes, expected.stats.isms.neighbourhood_votes,
-              comparisons_tolerance, what + ", votes around hypotheses");
+  EXPECT_EQ(got.stats.isms.neighbourhood_votes, expected.stats.isms.neighbourhood_votes) << what;
   EXPECT_EQ(got.stats.root_results, expected.stats.root_results) << what;
   EXPECT_EQ(got.stats.merged_estimates, expected.stats.merged_estimates) << what;
   EXPECT_EQ(got.stats.repeat_searches_given_up, expected.stats.repeat_searches_given_up) << what;
@@ -258,9 +237,8 @@ void expectSameWork(const WorkOutcome& expected, const WorkOutcome& got, const s
 
 // How often the caps of expectWorkIndependentOfTheWorldFrame() decided.
 struct CapsDecided {
-  int comparisons = 0;         // the exact search gave up, or its second pass ran out
-  int pose_steps = 0;          // the pose gap was left open
-  int comparisons_differ = 0;  // recognitions whose comparisons differed from the original's
+  int comparisons = 0;  // the exact search gave up, or its second pass ran out
+  int pose_steps = 0;   // the pose gap was left open
 };
 
 // Whether the exact search gives up, and its work, do not depend on where the world frame lies:
@@ -270,8 +248,7 @@ struct CapsDecided {
 // the cap decides, and, where the pose gap was sought, once with half its steps.
 CapsDecided expectWorkIndependentOfTheWorldFrame(const IsmTree& tree, const std::string& name,
                                                  const std::vector<Configuration>& sets,
-                                                 std::mt19937& random,
-                                                 double comparisons_tolerance = 0.0) {
+                                                 std::mt19937& random) {
   const TreeRecognizer recognizer(tree);
   CapsDecided decided;
   for (std::size_t set = 0; set < sets.size(); ++set) {
@@ -298,16 +275,12 @@ CapsDecided expectWorkIndependentOfTheWorldFrame(const IsmTree& tree, const std:
       const Configuration moved = movedRigidly(sets[set], motion);
       const std::string what = name + ", set " + std::to_string(set) + ", shift up to " +
                                std::to_string(max_shift) + " m";
-      const auto expectSame = [&](const WorkOutcome& expected, const TreeRecognizer& again,
-                                  const std::string& how) {
-        const WorkOutcome got = recognizeCounting(again, moved);
-        expectSameWork(expected, got, what + how, comparisons_tolerance);
-        decided.comparisons_differ += comparisonsDiffer(expected, got) ? 1 : 0;
-      };
-      expectSame(original, recognizer, "");
-      expectSame(capped_original, capped, ", small cap");
-      if (seeks_poses)
-        expectSame(pose_capped_original, pose_capped, ", few pose steps");
+      expectSameWork(original, recognizeCounting(recognizer, moved), what);
+      expectSameWork(capped_original, recognizeCounting(capped, moved), what + ", small cap");
+      if (seeks_poses) {
+        expectSameWork(pose_capped_original, recognizeCounting(pose_capped, moved),
+                       what + ", few pose steps");
+      }
     }
   }
   return decided;
@@ -379,15 +352,14 @@ TEST(SyntheticScene, WorkDoesNotDependOnWhereTheWorldFrameLies) {
 // one object, how they are merged and what the pose gap costs do not depend on where the world
 // frame lies either (docs/recognition.md). A synthetic table with two cups, star and complete
 // trees; each object seen up to four times, jittered by up to 2 cm / 4 deg, a cup's estimates
-// without their id with odds 1/3 (at most three such, so at most 8 labellings). Everything is
-// equal but the comparisons and the votes looked at around hypotheses, which may differ by a
-// few in a thousand: an ISM evaluation with the same inputs in the same order (weights equal
-// to 1e-12) made 279 comparisons in one frame and 278 in another, in the ISM search itself
-// (asr_ism), not yet explained.
+// without their id with odds 1/3 (at most three such, so at most 8 labellings). Seven objects:
+// on the ring of six, objects lie exactly 0.15 m (1.5 bins) apart along their axes, so votes
+// derived from one estimate fall exactly on bin borders of a frame anchored at another such
+// vote, where rounding decides (some comparisons differed between frames).
 TEST(SyntheticScene, WorkWithRepeatedDetectionsDoesNotDependOnWhereTheWorldFrameLies) {
-  constexpr double kComparisonsTolerance = 0.005;
   const std::vector<asr_common::ObjectKey> objects = {
-      {"Plate", "1"}, {"Cup", "1"}, {"Cup", "2"}, {"Knife", "1"}, {"Fork", "1"}, {"Napkin", "1"}};
+      {"Plate", "1"}, {"Cup", "1"},    {"Cup", "2"},  {"Knife", "1"},
+      {"Fork", "1"},  {"Napkin", "1"}, {"Spoon", "1"}};
   const asr_ism::Demonstration demonstration = synthetic::demonstration("table", objects, 6);
   std::mt19937 random(8);
   std::normal_distribution<double> gaussian(0.0, 1.0);
@@ -433,17 +405,15 @@ TEST(SyntheticScene, WorkWithRepeatedDetectionsDoesNotDependOnWhereTheWorldFrame
       merged += stats.merged_estimates;
     }
     const CapsDecided here = expectWorkIndependentOfTheWorldFrame(
-        tree, std::string("repeats, ") + (topology.relationCount() == 5 ? "star" : "complete"),
-        sets, random, kComparisonsTolerance);
+        tree, std::string("repeats, ") + (topology.relationCount() == 6 ? "star" : "complete"),
+        sets, random);
     decided.comparisons += here.comparisons;
     decided.pose_steps += here.pose_steps;
-    decided.comparisons_differ += here.comparisons_differ;
     cases += static_cast<int>(sets.size());
   }
   std::cout << "repeats: " << merged << " estimates merged, " << labellings
             << " labellings; the small comparisons cap decided in " << decided.comparisons << " of "
-            << cases << " cases, half the pose steps in " << decided.pose_steps
-            << "; comparisons differed in " << decided.comparisons_differ << " recognitions\n";
+            << cases << " cases, half the pose steps in " << decided.pose_steps << "\n";
   EXPECT_GT(merged, 0u);
   EXPECT_GT(labellings, static_cast<std::size_t>(cases));
   EXPECT_GT(decided.comparisons, 0);
