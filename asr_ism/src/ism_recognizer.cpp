@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "asr_ism/coincident_poses.hpp"
 #include "asr_ism/common_types.hpp"
 #include "asr_ism/compliance.hpp"
 #include "asr_ism/voting_space.hpp"
@@ -873,13 +874,16 @@ std::vector<Hypothesis> searchBins(const VotingSpace& space, Search& search, Bar
   return found;
 }
 
+// Candidate c's pose in the search frame.
+Pose poseOf(const Votes& votes, int c) {
+  return Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
+              Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c]));
+}
+
 IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, const SearchFrame& frame,
                    std::vector<int> atoms) {
-  const int c = hypothesis.candidate;
   IsmResult result;
-  result.reference_pose =
-      frame.toWorld(Pose(Eigen::Vector3d(votes.px[c], votes.py[c], votes.pz[c]),
-                         Eigen::Quaterniond(votes.qw[c], votes.qx[c], votes.qy[c], votes.qz[c])));
+  result.reference_pose = frame.toWorld(poseOf(votes, hypothesis.candidate));
   result.objective = hypothesis.objective;
   // Inputs that stand for themselves (negative atoms) sort first; report real estimates only.
   result.estimates.assign(std::lower_bound(atoms.begin(), atoms.end(), 0), atoms.end());
@@ -893,32 +897,6 @@ IsmResult resultOf(const Hypothesis& hypothesis, const Votes& votes, const Searc
   }
   return result;
 }
-
-// A hypothesis' pose at the resolution at which votes coincide: composed along different paths,
-// equal poses differ in their last bits only. The quaternion's sign is fixed (q and -q are one
-// orientation).
-using PoseKey = std::array<std::int64_t, 7>;
-
-PoseKey poseKey(const Votes& votes, int c) {
-  constexpr double kResolution = 1e-12;
-  const double sign = votes.qw[c] < 0.0 ? -1.0 : 1.0;
-  const double values[7] = {votes.px[c],        votes.py[c],        votes.pz[c],
-                            sign * votes.qw[c], sign * votes.qx[c], sign * votes.qy[c],
-                            sign * votes.qz[c]};
-  PoseKey key;
-  for (std::size_t i = 0; i < key.size(); ++i)
-    key[i] = std::llround(values[i] / kResolution);
-  return key;
-}
-
-struct PoseKeyHash {
-  std::size_t operator()(const PoseKey& key) const {
-    std::size_t hash = 1469598103934665603ULL;
-    for (std::int64_t value : key)
-      hash = (hash ^ static_cast<std::size_t>(value)) * 1099511628211ULL;
-    return hash;
-  }
-};
 
 // Best level first, ties by the hypothesis' key (unique per vote), so neither the search order
 // nor the bin grid decides between equally good results; then one result per assignment, and none
@@ -940,7 +918,7 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
   std::size_t best_taken = 0;
   std::unordered_map<std::vector<int>, bool, AssignmentHash> seen;
   std::vector<std::vector<int>> kept_atoms;
-  std::unordered_set<PoseKey, PoseKeyHash> poses_taken;
+  asr_ism::CoincidentPoses poses_taken;
   const bool wants_every = std::isfinite(selection.every_result_from);
   for (Hypothesis& hypothesis : found) {
     const bool capped = selection.best_count > 0 && best_taken >= selection.best_count;
@@ -956,7 +934,7 @@ std::vector<IsmResult> selectResults(std::vector<Hypothesis>& found, const Votes
     }
     // Poses matter only where every result reaching every_result_from is wanted.
     const bool pose_new =
-        wants_every && poses_taken.insert(poseKey(votes, hypothesis.candidate)).second;
+        wants_every && poses_taken.insertIfNew(poseOf(votes, hypothesis.candidate));
     if (!as_best && !(reaches_every_from && pose_new))
       continue;
     if (as_best) {

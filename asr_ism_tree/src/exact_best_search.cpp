@@ -9,6 +9,8 @@
 #include <unordered_set>
 #include <utility>
 
+#include "asr_ism/coincident_poses.hpp"
+
 namespace asr_ism_tree {
 namespace {
 
@@ -145,42 +147,6 @@ struct CellHash {
   std::size_t operator()(const Cell& c) const {
     return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
   }
-};
-
-// The poses a member's inputs already have, and those found: a pose counts as known within
-// rounding (which differs with where the world frame lies), so that the same pose composed along
-// another route or in another frame is not added twice.
-class KnownPoses {
- public:
-  bool contains(const Pose& pose) const {
-    const Cell own = cellOf(pose.position);
-    for (int dx = -1; dx <= 1; ++dx) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto found = cells_.find(Cell{own[0] + dx, own[1] + dy, own[2] + dz});
-          if (found != cells_.end() &&
-              std::any_of(found->second.begin(), found->second.end(),
-                          [&](const Pose& known) { return same(known, pose); }))
-            return true;
-        }
-      }
-    }
-    return false;
-  }
-  void insert(const Pose& pose) { cells_[cellOf(pose.position)].push_back(pose); }
-
- private:
-  static constexpr double kCell = 1e-6;  // metres; rounding is far below
-  static bool same(const Pose& a, const Pose& b) {
-    return (a.position - b.position).norm() <= 1e-9 &&
-           std::abs(a.orientation.dot(b.orientation)) >= 1.0 - 1e-12;
-  }
-  static Cell cellOf(const Eigen::Vector3d& p) {
-    return {static_cast<std::int64_t>(std::floor(p.x() / kCell)),
-            static_cast<std::int64_t>(std::floor(p.y() / kCell)),
-            static_cast<std::int64_t>(std::floor(p.z() / kCell))};
-  }
-  std::unordered_map<Cell, std::vector<Pose>, CellHash> cells_;
 };
 
 // The votes of the inputs that can be part of a result reaching `from`, by cell of the support
@@ -345,7 +311,9 @@ bool poseGapCandidates(const IsmTree& tree, int ism, double from,
     if (eligible.mostReachable() < from - kMargin)
       return true;  // no hypothesis anywhere reaches `from`
     // Poses a member's inputs already have, and those found.
-    std::vector<KnownPoses> known(model.members.size());
+    // A pose counts as known within rounding (asr_ism/coincident_poses.hpp), so that the same
+    // pose composed along another route or in another frame is not added twice.
+    std::vector<asr_ism::CoincidentPoses> known(model.members.size());
     for (const asr_ism::IsmInput& input : inputs)
       known[input.member].insert(input.pose);
     ChainPoses chains(tree, poses, estimates_of_object, steps);
