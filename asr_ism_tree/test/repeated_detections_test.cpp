@@ -192,7 +192,8 @@ TEST_F(RepeatedDetectionsInATree, TheMergedInstanceIsAtLeastThatOfTheRepresentat
 TEST_F(RepeatedDetectionsInATree, WorkDoesNotGrowWithRepeats) {
   // Linear in clutter, counted in votes: ten and fifty repeats of every object cost the merged
   // recognition no more votes than one detection each; the search over every repeat that
-  // follows is bounded by the exact search's limit, and where it runs out the merged best stands.
+  // follows is bounded by the exact search's limit, and where it runs out the best found before
+  // it stands: the merged one or, higher, that of the repeats that fit it best.
   TreeRecognitionParameters merged_only, limited;
   merged_only.exact_over_repeats = false;
   limited.exact_search_max_comparisons = 20000;
@@ -215,7 +216,7 @@ TEST_F(RepeatedDetectionsInATree, WorkDoesNotGrowWithRepeats) {
     EXPECT_LE(searched.exact_search_comparisons, limited.exact_search_max_comparisons);
     ASSERT_FALSE(alone.empty());
     ASSERT_FALSE(searched_instances.empty());
-    EXPECT_EQ(searched_instances.front().confidence, alone.front().confidence);
+    EXPECT_GE(searched_instances.front().confidence, alone.front().confidence - 1e-12);
   }
 }
 
