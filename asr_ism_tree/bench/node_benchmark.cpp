@@ -56,7 +56,7 @@ std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_common::Configuration
 // Gedeck's recorded set 5 repeated with 2 cm / 3 deg jitter up to `count` estimates.
 asr_common::Configuration clutteredGedeck(const std::string& recordings, std::size_t count) {
   const auto recorded =
-      asr_ism::sqlite::readDemonstration(recordings + "/story_1.sqlite", "gedeck").configuration(5);
+      bench::clutterDemonstration(recordings).configuration(bench::kClutterRecordedSet);
   return bench::clutteredCopies(recorded, count, 1);
 }
 
