@@ -12,20 +12,19 @@ namespace asr_ism_tree {
 /// that ISM's reference pose exactly.
 struct ExpectedPose {
   int object = -1;
-  int estimate = -1;  // the representative matched there
   asr_common::Pose pose;
 };
 
 /// The estimates a further evaluation over repeated detections starts from: per object with
-/// expected poses, the estimate of `every_estimate` nearest to them (the sum over its expected
-/// poses of the squared distance and angle, each in units of `tolerance`; the first of equals)
-/// in place of the representatives matched there, the other representatives kept. Objects
-/// without expected poses keep their representatives. Each list keeps the order of
-/// `every_estimate`. Linear in the estimates: the exhaustive best often combines the repeats
-/// that fit such an instance best, and a best found early lets the exact search prune the rest.
+/// expected poses, the `per_object` estimates of `every_estimate` nearest to them (the sum over
+/// its expected poses of the squared distance and angle, each in units of `tolerance`; the first
+/// of equals), its representatives elsewhere left out; objects without expected poses keep
+/// their representatives. Each list keeps the order of `every_estimate`. Linear in the
+/// estimates: the exhaustive best often combines repeats that fit such an instance well, and a
+/// best found early lets the exact search prune the rest.
 std::vector<std::vector<int>> bestFittingRepeats(
     const std::vector<ExpectedPose>& expected, const std::vector<std::vector<int>>& representatives,
     const std::vector<std::vector<int>>& every_estimate, const std::vector<asr_common::Pose>& poses,
-    const RepeatedDetectionTolerance& tolerance);
+    const RepeatedDetectionTolerance& tolerance, std::size_t per_object);
 
 }  // namespace asr_ism_tree

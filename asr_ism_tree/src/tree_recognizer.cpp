@@ -49,8 +49,13 @@ RelaxedBoundParameters relaxedBoundParameters(const IsmTree& tree, std::size_t m
 constexpr double kDiverseFraction = 0.1;
 
 // Evaluations over the repeats that fit the best instance best, each from the previous one's
-// best, while the best rises.
+// best, while the best rises: with the best-fitting repeat of each object (where the set a
+// detector saw best is among the repeats, this reaches it at the cost of one evaluation over
+// the representatives), then, below the bound, the three best-fitting (on the clutter series
+// without its recorded set, complete tree, 100 / 250 / 1,000 estimates, the best rose from
+// 0.946 / 0.967 / 0.969 with one to 0.971 / 0.975 / 0.992; five added < 0.002).
 constexpr int kFittingRounds = 3;
+constexpr std::size_t kFittedPerObject = 3;
 
 // Thrown where the exact search would exceed its budget.
 struct ExactSearchTooLarge {};
@@ -533,27 +538,30 @@ bool TreeRecognizer::evaluateBestFittingRepeats(
   std::vector<std::vector<int>> estimates = representatives;
   std::vector<EvaluatedIsm> candidate;
   bool better = false;
-  for (int round = 0; round < kFittingRounds; ++round) {
-    const std::vector<EvaluatedIsm>& current = better ? fitted : first;
-    if (current[0].results.empty() || bestOf(current) >= bound - kObjectiveMargin)
-      break;
-    std::vector<LeafOutcome> leaves;
-    std::vector<InstanceIsm> isms(tree_.isms.size());
-    InstanceAssembler(tree_, current).collect(0, 0, 1.0, leaves, isms);
-    std::vector<ExpectedPose> expected;
-    for (const LeafOutcome& leaf : leaves) {
-      if (leaf.estimate >= 0)
-        expected.push_back({leaf.object, leaf.estimate, leaf.expected});
+  for (std::size_t per_object : {std::size_t{1}, kFittedPerObject}) {
+    for (int round = 0; round < kFittingRounds; ++round) {
+      const std::vector<EvaluatedIsm>& current = better ? fitted : first;
+      if (current[0].results.empty() || bestOf(current) >= bound - kObjectiveMargin)
+        return better;
+      std::vector<LeafOutcome> leaves;
+      std::vector<InstanceIsm> isms(tree_.isms.size());
+      InstanceAssembler(tree_, current).collect(0, 0, 1.0, leaves, isms);
+      std::vector<ExpectedPose> expected;
+      for (const LeafOutcome& leaf : leaves) {
+        if (leaf.estimate >= 0)
+          expected.push_back({leaf.object, leaf.expected});
+      }
+      auto next = bestFittingRepeats(expected, representatives, every_estimate, poses, tolerance,
+                                     per_object);
+      if (next == estimates)
+        break;
+      evaluateFirst(poses, next, candidate, ism_stats);
+      if (bestOf(candidate) <= bestOf(current) + kObjectiveMargin)
+        break;
+      fitted = std::move(candidate);
+      estimates = std::move(next);
+      better = true;
     }
-    auto next = bestFittingRepeats(expected, estimates, every_estimate, poses, tolerance);
-    if (next == estimates)
-      break;
-    evaluateFirst(poses, next, candidate, ism_stats);
-    if (bestOf(candidate) <= bestOf(current) + kObjectiveMargin)
-      break;
-    fitted = std::move(candidate);
-    estimates = std::move(next);
-    better = true;
   }
   return better;
 }
