@@ -33,7 +33,7 @@
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
-#include "clutter_benchmark.hpp"
+#include "clutter_series.hpp"
 
 namespace {
 

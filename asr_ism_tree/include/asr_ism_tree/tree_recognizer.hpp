@@ -31,8 +31,10 @@ struct TreeRecognitionParameters {
   /// With `exact_best`, where repeated detections were merged: the exact search asks whether any
   /// combination of every estimate beats the best over the representatives, so the best
   /// instance is that of every estimate, within the exact search's limits
-  /// (TreeRecognitionStats::repeat_searches_given_up says where they ran out). false: the best
-  /// over the representatives, which can be lower (docs/recognition.md).
+  /// (TreeRecognitionStats::repeat_searches_given_up says where they ran out). It starts from
+  /// the repeats that fit the merged best instance best (best_fitting_repeats.hpp), which may
+  /// reach the bound, so that nothing need be searched. false: the best over the
+  /// representatives, which can be lower (docs/recognition.md).
   bool exact_over_repeats = true;
   /// Makes the best instance that of the exhaustive search (`pass_every_result`): after the first
   /// evaluation, every sub-ISM is asked for every further result that could still be part of a
