@@ -41,7 +41,10 @@ problems=""
 [ -s "$models" ] || problems+="no models learned into $models; "
 outcome=$(/usr/bin/python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["outcome"])' \
   "$out/result.json" 2>/dev/null)
-[ "$outcome" = "found_all_objects" ] || problems+="outcome '${outcome:-none}', not found_all_objects; "
+reason=$(/usr/bin/python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["reason"])' \
+  "$out/result.json" 2>/dev/null)
+[ "$outcome" = "found_all_objects" ] ||
+  problems+="outcome '${outcome:-none}'${reason:+ ($reason)}, not found_all_objects; "
 for file in search_log.jsonl search.bag search.png; do
   [ -s "$out/$file" ] || problems+="no $file; "
 done

@@ -134,18 +134,9 @@ TEST_F(SubsetsInATree, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingItWhereSe
   std::mt19937 random(17);
   int given_up = 0, cut = 0, raised = 0, lower_without = 0, cut_after_one = 0;
   for (int trial = 0; trial < 150; ++trial) {
-    const std::size_t step =
-        std::uniform_int_distribution<std::size_t>(0, demonstration_.stepCount() - 1)(random);
-    const Configuration recorded = demonstration_.configuration(step);
-    const std::size_t object =
-        std::uniform_int_distribution<std::size_t>(0, recorded.size() - 1)(random);
-    const double scale = std::uniform_real_distribution<double>(0.05, 1.0)(random);
-    Configuration removed = recorded;
-    removed.erase(removed.begin() + object);
-    Configuration changed = recorded;
-    changed[object].pose = test_support::perturbed(recorded[object].pose, random, scale);
+    const auto [changed, removed, what] = test_support::oneObjectSeenBadly(demonstration_, random);
     for (const auto& [name, tree] : trees_) {
-      SCOPED_TRACE(name + ", case " + std::to_string(trial));
+      SCOPED_TRACE(name + ", case " + std::to_string(trial) + ": " + what);
       TreeRecognitionStats stats;
       const TreeRecognizer recognizer(tree, small_budget);
       const double with = bestConfidence(recognizer.recognize(changed, &stats));

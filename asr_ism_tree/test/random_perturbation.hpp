@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "asr_common/pose.hpp"
+#include "asr_ism/demonstration.hpp"
 
 namespace asr_ism_tree::test_support {
 
@@ -26,6 +28,30 @@ inline asr_common::Pose perturbed(const asr_common::Pose& pose, std::mt19937& ra
     result.position += scale * 0.2 * direction;
   }
   return result;
+}
+
+/// One case of "seeing an object badly never scores lower than not seeing it": a random recorded
+/// set of `demonstration` with one random object perturbed (scale 0.05-1), and the set without it.
+struct OneObjectSeenBadly {
+  asr_common::Configuration changed;
+  asr_common::Configuration removed;
+  std::string what;  // which set, object and scale, for a failure's message
+};
+
+inline OneObjectSeenBadly oneObjectSeenBadly(const asr_ism::Demonstration& demonstration,
+                                             std::mt19937& random) {
+  const std::size_t step =
+      std::uniform_int_distribution<std::size_t>(0, demonstration.stepCount() - 1)(random);
+  const asr_common::Configuration recorded = demonstration.configuration(step);
+  const std::size_t object =
+      std::uniform_int_distribution<std::size_t>(0, recorded.size() - 1)(random);
+  const double scale = std::uniform_real_distribution<double>(0.05, 1.0)(random);
+  OneObjectSeenBadly seen{recorded, recorded,
+                          "set " + std::to_string(step) + ", " + recorded[object].key.toString() +
+                              " perturbed at scale " + std::to_string(scale)};
+  seen.removed.erase(seen.removed.begin() + static_cast<std::ptrdiff_t>(object));
+  seen.changed[object].pose = perturbed(recorded[object].pose, random, scale);
+  return seen;
 }
 
 }  // namespace asr_ism_tree::test_support

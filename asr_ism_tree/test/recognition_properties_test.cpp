@@ -100,6 +100,7 @@ class RecordedScene : public ::testing::TestWithParam<SceneFile> {
   void SetUp() override { REQUIRE_RECORDINGS(); }
 };
 
+using test_support::oneObjectSeenBadly;
 using test_support::perturbed;
 
 // Seeing an object badly never scores lower than not seeing it: the instance without the object
@@ -119,16 +120,7 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
   for (const auto& [topology, tree] : scene.trees) {
     const TreeRecognizer recognizer(tree);
     for (int trial = 0; trial < 40; ++trial) {
-      const std::size_t step = std::uniform_int_distribution<std::size_t>(
-          0, scene.demonstration.stepCount() - 1)(random);
-      const Configuration recorded = scene.demonstration.configuration(step);
-      const std::size_t object =
-          std::uniform_int_distribution<std::size_t>(0, recorded.size() - 1)(random);
-      const double scale = std::uniform_real_distribution<double>(0.05, 1.0)(random);
-      Configuration removed = recorded;
-      removed.erase(removed.begin() + object);
-      Configuration changed = recorded;
-      changed[object].pose = perturbed(recorded[object].pose, random, scale);
+      const auto [changed, removed, what] = oneObjectSeenBadly(scene.demonstration, random);
       TreeRecognitionStats removed_stats, changed_stats;
       const double without = bestConfidence(recognizer.recognize(removed, &removed_stats));
       const double with = bestConfidence(recognizer.recognize(changed, &changed_stats));
@@ -153,9 +145,7 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
       subsets_better += changed_stats.object_subsets_better;
       most_subsets = std::max(most_subsets, changed_stats.object_subset_searches);
       subsets_cut += changed_stats.object_subset_searches_cut;
-      EXPECT_GE(with, without - kTolerance)
-          << topology << " tree, set " << step << ", " << recorded[object].key.toString()
-          << " perturbed at scale " << scale;
+      EXPECT_GE(with, without - kTolerance) << topology << " tree, " << what;
     }
   }
   std::cout << GetParam().scene << ": largest shortfall " << worst

@@ -3,7 +3,7 @@
 // found_all_objects; every scene object is found where the world has it; the published summary
 // is what `asr search --json` gives (same fields), its log is the JSON-lines log file, and the
 // latched state says the outcome. A service call of a part ends in a PartFailure naming the
-// node when the service is gone or stalls. search_bad_input.test: a scene no model holds is
+// node when the service is gone, stalls or fails every attempt; a call that fails is made again. search_bad_input.test: a scene no model holds is
 // refused before anything moves, on ~result. Waits are wall-clock hang guards only: the search
 // runs on simulated time.
 #include <asr_msgs/ResetNbvHypotheses.h>
@@ -12,6 +12,7 @@
 #include <ros/ros.h>
 #include <std_msgs/String.h>
 
+#include <atomic>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -114,7 +115,8 @@ TEST_F(SearchLaunchTest, TheLogFileHoldsEveryDecisionOfThePublishedLog) {
   }
 }
 
-// Any service will do: the test's own, which stalls for as long as it is told to.
+// Any service will do: the test's own, which stalls for as long as it is told to and fails the
+// first `failures_` calls (roscpp's client sees a failed call as it sees a broken connection).
 class PartCalls : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -124,7 +126,7 @@ class PartCalls : public ::testing::Test {
         "stalling_service", [this](auto&, auto& response) {
           ros::WallDuration(stall_seconds_).sleep();
           response.hypotheses = 7;
-          return true;
+          return ++calls_ > failures_;
         });
   }
 
@@ -132,7 +134,32 @@ class PartCalls : public ::testing::Test {
   ros::AsyncSpinner spinner_{1};
   ros::ServiceServer service_;
   double stall_seconds_ = 0.0;
+  std::atomic<int> calls_{0};
+  int failures_ = 0;
 };
+
+TEST_F(PartCalls, ACallThatFailsWhileTheServiceIsOfferedIsMadeAgain) {
+  failures_ = ros_interface::kServiceCallAttempts - 1;
+  asr_msgs::ResetNbvHypotheses call;
+  ros_interface::callService({"test_node", 30.0}, "stalling_service", call);
+  EXPECT_EQ(call.response.hypotheses, 7u);
+  EXPECT_EQ(calls_, ros_interface::kServiceCallAttempts);
+}
+
+TEST_F(PartCalls, ANodeThatFailsEveryAttemptIsAPartFailureNamingIt) {
+  failures_ = 1000;
+  asr_msgs::ResetNbvHypotheses call;
+  try {
+    ros_interface::callService({"test_node", 30.0}, "stalling_service", call);
+    FAIL() << "no PartFailure";
+  } catch (const PartFailure& failure) {
+    EXPECT_EQ(failure.part(), "test_node");
+    EXPECT_NE(std::string(failure.what()).find("failed 3 times"), std::string::npos)
+        << failure.what();
+  }
+  EXPECT_EQ(calls_, ros_interface::kServiceCallAttempts);
+  EXPECT_EQ(call.response.hypotheses, 0u) << "a failed call must leave the response as it was";
+}
 
 TEST_F(PartCalls, AnAnswerInTimeIsReturned) {
   asr_msgs::ResetNbvHypotheses call;

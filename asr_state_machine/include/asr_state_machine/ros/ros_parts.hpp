@@ -20,8 +20,9 @@
 // robot_driver's move_robot action and robot_state topic, the detector over detect_objects
 // (object_detector_sim or apriltag_detector), recognition over scene_recognizer's
 // recognize_scenes, prediction over pose_predictor's predict_poses, the next best view over
-// next_best_view's services. A node that does not answer within its timeout, or whose service
-// is gone, throws PartFailure naming it: the search ends `aborted` with the reason.
+// next_best_view's services. A node that does not answer within its timeout, whose service is
+// gone or whose call fails three times throws PartFailure naming it: the search ends `aborted`
+// with the reason.
 namespace asr_state_machine::ros_interface {
 
 /// The robot behind robot_driver. The motion's timeout counts from the driver's last sign of
