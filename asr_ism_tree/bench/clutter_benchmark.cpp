@@ -2,20 +2,18 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 
-#include "asr_ism/portable_random.hpp"
-#include "asr_ism/sqlite/demonstration_reader.hpp"
-#include "asr_ism_tree/star_center.hpp"
-#include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 
 namespace asr_ism_tree::bench {
 namespace {
 
 constexpr double kStopAfterMs = 30000.0;
-constexpr std::size_t kRecordedSet = 5;
+// Best confidences within this are the same (rounding of sums of similarities).
+constexpr double kSameBest = 1e-9;
 
 double millisecondsOf(const TreeRecognizer& recognizer, const asr_common::Configuration& input,
                       std::vector<SceneInstance>& instances,
@@ -26,53 +24,33 @@ double millisecondsOf(const TreeRecognizer& recognizer, const asr_common::Config
       .count();
 }
 
+double bestConfidence(const std::vector<SceneInstance>& instances) {
+  return instances.empty() ? 0.0 : instances.front().confidence;
+}
+
 }  // namespace
 
 std::vector<std::size_t> clutterSizes() {
   return {100, 250, 500, 1000, 2000, 5000, 10000};
 }
 
-asr_common::Configuration clutteredCopies(const asr_common::Configuration& recorded,
-                                          std::size_t estimates, std::uint32_t seed) {
-  asr_ism::PortableRandom random(seed);
-  asr_common::Configuration configuration;
-  for (std::size_t i = 0; i < estimates; ++i) {
-    asr_common::ObjectEstimate estimate = recorded[i % recorded.size()];
-    if (i >= recorded.size()) {
-      const Eigen::Vector3d shift(random.gaussian(), random.gaussian(), random.gaussian());
-      const Eigen::Vector3d axis(random.gaussian(), random.gaussian(), random.gaussian());
-      estimate.pose.position += 0.02 * shift;
-      estimate.pose.orientation = (estimate.pose.orientation *
-                                   Eigen::Quaterniond(Eigen::AngleAxisd(
-                                       3.0 * M_PI / 180.0 * random.gaussian(), axis.normalized())))
-                                      .normalized();
-    }
-    configuration.push_back(estimate);
-  }
-  return configuration;
+std::size_t exhaustiveUpTo(const std::string& topology) {
+  return topology == "star" ? 500 : 2000;
 }
 
 std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
                                          const BenchmarkSettings& settings,
                                          std::ostream& progress) {
-  const asr_ism::Demonstration demonstration =
-      asr_ism::sqlite::readDemonstration(recordings + "/story_1.sqlite", "gedeck");
-  const auto& objects = demonstration.objects();
-  const std::pair<std::string, IsmTree> trees[] = {
-      {"star",
-       generateIsmTree(demonstration,
-                       RelationTopology::star(objects, chooseStarCenter(demonstration)), {})},
-      {"complete", generateIsmTree(demonstration, RelationTopology::complete(objects), {})}};
-  const asr_common::Configuration recorded = demonstration.configuration(kRecordedSet);
+  const asr_ism::Demonstration demonstration = clutterDemonstration(recordings);
+  const asr_common::Configuration recorded = demonstration.configuration(kClutterRecordedSet);
   std::vector<ClutterRow> rows;
-  for (const auto& [topology, tree] : trees) {
+  for (const auto& [topology, tree] : clutterTrees(demonstration)) {
     TreeRecognitionParameters parameters;
     parameters.max_estimates = clutterSizes().back();
     if (settings.exact_search_max_votes > 0)
       parameters.exact_search_max_votes = settings.exact_search_max_votes;
     const TreeRecognizer recognizer(tree, parameters);
-    parameters.merge_repeated_detections = false;
-    const TreeRecognizer exhaustive(tree, parameters);
+    const TreeRecognizer exhaustive(tree, exhaustiveClutterParameters(clutterSizes().back()));
     bool too_slow = false;
     progress << "  clutter, " << topology << ":" << std::flush;
     for (std::size_t estimates : clutterSizes()) {
@@ -91,10 +69,13 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
               std::min(row.milliseconds, millisecondsOf(recognizer, input, instances));
         row.run = true;
         row.instances = instances.size();
-        row.best_confidence = instances.empty() ? 0.0 : instances.front().confidence;
-        if (estimates == clutterSizes().front()) {
-          millisecondsOf(exhaustive, input, instances);
-          row.exhaustive_best_confidence = instances.empty() ? 0.0 : instances.front().confidence;
+        row.best_confidence = bestConfidence(instances);
+        if (estimates <= exhaustiveUpTo(topology)) {
+          TreeRecognitionStats exhaustive_stats;
+          row.exhaustive_milliseconds =
+              millisecondsOf(exhaustive, input, instances, &exhaustive_stats);
+          row.exhaustive_best_confidence = bestConfidence(instances);
+          row.exhaustive_given_up = exhaustive_stats.exact_searches_given_up > 0;
         }
         too_slow = row.milliseconds > kStopAfterMs;
         progress << " " << estimates << std::flush;
@@ -106,13 +87,32 @@ std::vector<ClutterRow> benchmarkClutter(const std::string& recordings,
   return rows;
 }
 
+std::string comparedWithExhaustive(const ClutterRow& row) {
+  if (row.exhaustive_best_confidence < 0.0)
+    return "";
+  const double shortfall = row.exhaustive_best_confidence - row.best_confidence;
+  char text[64];
+  if (std::abs(shortfall) <= kSameBest)
+    std::snprintf(text, sizeof text, "same");
+  else if (shortfall > 0.0)
+    std::snprintf(text, sizeof text, "lower by %.2g", shortfall);
+  else
+    std::snprintf(text, sizeof text, "higher by %.2g", -shortfall);
+  return std::string(text) + (row.exhaustive_given_up ? " (exhaustive gave up)" : "");
+}
+
 void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
-  out << "Clutter: gedeck set " << kRecordedSet
+  out << "Clutter: gedeck set " << kClutterRecordedSet
       << " repeated with 2 cm / 3 deg jitter (all estimates of the scene's types)\n";
-  out << "(repeated detections merged; exhaustive: every repeat enters the search; *: the search\n"
-      << " over every repeat ran out of its work limits, the best over the merged ones stands)\n";
-  out << "topology  estimates     kept        ms  instances  best confidence  exhaustive best\n";
-  char line[160];
+  out << "(repeated detections merged; *: the search over every repeat ran out of its work "
+         "limits,\n"
+      << " the best found before it stands; exhaustive: every repeat enters the search, as before\n"
+      << " they were merged, up to " << exhaustiveUpTo("star") << " (star) and "
+      << exhaustiveUpTo("complete") << " (complete) estimates; vs exhaustive: the\n"
+      << " best against the exhaustive best at 1e-9)\n";
+  out << "topology  estimates     kept        ms  instances  best confidence  exhaustive best"
+         "  exhaustive ms  vs exhaustive\n";
+  char line[200];
   for (const ClutterRow& row : rows) {
     if (row.run) {
       std::snprintf(line, sizeof line, "%-8s  %9zu  %7zu  %8.1f  %9zu  %15.3f",
@@ -120,7 +120,8 @@ void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
                     row.milliseconds, row.instances, row.best_confidence);
       out << line << (row.repeat_search_given_up ? "*" : " ");
       if (row.exhaustive_best_confidence >= 0.0) {
-        std::snprintf(line, sizeof line, " %15.3f", row.exhaustive_best_confidence);
+        std::snprintf(line, sizeof line, " %15.3f  %13.1f  %s", row.exhaustive_best_confidence,
+                      row.exhaustive_milliseconds, comparedWithExhaustive(row).c_str());
         out << line;
       }
       out << "\n";

@@ -33,7 +33,7 @@
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
-#include "clutter_benchmark.hpp"
+#include "clutter_series.hpp"
 
 namespace {
 
@@ -56,7 +56,7 @@ std::vector<asr_msgs::ObjectEstimate> messagesOf(const asr_common::Configuration
 // Gedeck's recorded set 5 repeated with 2 cm / 3 deg jitter up to `count` estimates.
 asr_common::Configuration clutteredGedeck(const std::string& recordings, std::size_t count) {
   const auto recorded =
-      asr_ism::sqlite::readDemonstration(recordings + "/story_1.sqlite", "gedeck").configuration(5);
+      bench::clutterDemonstration(recordings).configuration(bench::kClutterRecordedSet);
   return bench::clutteredCopies(recorded, count, 1);
 }
 

@@ -53,6 +53,28 @@ void checkClutter(const std::vector<ClutterRow>& clutter,
                       row.run ? milliseconds(row.milliseconds) : "not run (too slow)",
                       row.run && row.milliseconds <= limit});
   }
+  // ... with the results of before the merge where those finish: the exhaustive best.
+  for (const std::string topology : {"star", "complete"}) {
+    std::size_t compared = 0, same = 0;
+    std::string differing;
+    for (const ClutterRow& row : clutter) {
+      if (row.topology != topology || row.exhaustive_best_confidence < 0.0)
+        continue;
+      ++compared;
+      const std::string outcome = comparedWithExhaustive(row);
+      if (outcome == "same")
+        ++same;
+      else
+        differing += ", " + std::to_string(row.estimates) + ": " + outcome;
+    }
+    if (compared == 0)
+      continue;
+    checks.push_back({"clutter " + topology + " best = exhaustive best up to " +
+                          std::to_string(exhaustiveUpTo(topology)) + " estimates",
+                      "same in " + std::to_string(same) + " of " + std::to_string(compared) +
+                          " rows" + differing,
+                      same == compared});
+  }
 }
 
 }  // namespace

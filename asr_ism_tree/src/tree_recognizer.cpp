@@ -11,6 +11,7 @@
 #include "asr_common/input_error.hpp"
 #include "asr_ism_tree/estimate_matching.hpp"
 #include "asr_ism_tree/repeated_detections.hpp"
+#include "best_fitting_repeats.hpp"
 #include "exact_best_search.hpp"
 #include "object_subsets.hpp"
 #include "pose_diverse_results.hpp"
@@ -48,6 +49,15 @@ RelaxedBoundParameters relaxedBoundParameters(const IsmTree& tree, std::size_t m
 // fill the places (docs/recognition.md).
 constexpr double kDiverseFraction = 0.1;
 
+// Evaluations over the repeats that fit the best instance best, each from the previous one's
+// best, while the best rises: with the best-fitting repeat of each object (where the set a
+// detector saw best is among the repeats, this reaches it at the cost of one evaluation over
+// the representatives), then, below the bound, the three best-fitting (on the clutter series
+// without its recorded set, complete tree, 100 / 250 / 1,000 estimates, the best rose from
+// 0.946 / 0.967 / 0.969 with one to 0.971 / 0.975 / 0.992; five added < 0.002).
+constexpr int kFittingRounds = 3;
+constexpr std::size_t kFittedPerObject = 3;
+
 // Thrown where the exact search would exceed its budget.
 struct ExactSearchTooLarge {};
 
@@ -69,12 +79,15 @@ constexpr double kPoseOnlyWeight = 0.5;
 
 // The first evaluation (a few results per sub-ISM) and, where its best instance may not be the
 // exhaustive search's, the exact search's, whose root holds the results reaching the first best;
-// where repeated detections were merged, the exact search over every estimate, whose root holds
-// the results reaching the best over the representatives.
+// where repeated detections were merged, an evaluation over the repeats that fit the best
+// instance best, where its best is higher, and the exact search over every estimate, whose root
+// holds the results reaching the best of those.
 struct TreeEvaluation {
   std::vector<EvaluatedIsm> first;
   std::vector<EvaluatedIsm> exact;
   bool has_exact = false;
+  std::vector<EvaluatedIsm> fitted;
+  bool has_fitted = false;
   std::vector<EvaluatedIsm> over_repeats;
   bool has_over_repeats = false;
 };
@@ -88,6 +101,7 @@ struct LeafOutcome {
   double contribution = 0.0;
   double position_compliance = 0.0;
   double orientation_compliance = 0.0;
+  Pose expected;  // if matched: from where its vote would fall on the ISM's reference pose
 };
 
 class InstanceAssembler {
@@ -121,6 +135,10 @@ class InstanceAssembler {
         leaf.contribution = contribution;
         leaf.position_compliance = match->position_compliance;
         leaf.orientation_compliance = match->orientation_compliance;
+        leaf.expected = asr_common::compose(
+            result->reference_pose,
+            asr_common::inverse(
+                members[m].relative_poses[match->relative_pose].reference_in_member));
       }
       leaves.push_back(leaf);
     }
@@ -232,12 +250,18 @@ void addIsmWork(asr_ism::IsmRecognitionStats& total, const asr_ism::IsmRecogniti
   total.neighbourhood_votes += part.neighbourhood_votes;
 }
 
+// The best objective of the root's results, 0 if none.
+double bestOf(const std::vector<EvaluatedIsm>& evaluated) {
+  return evaluated[0].results.empty() ? 0.0 : evaluated[0].results.front().objective;
+}
+
 // The best objective any of the evaluation's roots reached, 0 if none.
 double bestRootObjective(const TreeEvaluation& evaluation) {
   double best = 0.0;
   for (const auto& [evaluated, ran] :
        {std::make_pair(&evaluation.first, true),
         std::make_pair(&evaluation.exact, evaluation.has_exact),
+        std::make_pair(&evaluation.fitted, evaluation.has_fitted),
         std::make_pair(&evaluation.over_repeats, evaluation.has_over_repeats)}) {
     if (ran && !(*evaluated)[0].results.empty())
       best = std::max(best, (*evaluated)[0].results.front().objective);
@@ -267,6 +291,7 @@ RootResults rootResultsToAssemble(const TreeEvaluation& evaluation) {
   double best = first.empty() ? -std::numeric_limits<double>::infinity() : first.front().objective;
   for (const auto& [searched, ran] :
        {std::make_pair(&evaluation.exact, evaluation.has_exact),
+        std::make_pair(&evaluation.fitted, evaluation.has_fitted),
         std::make_pair(&evaluation.over_repeats, evaluation.has_over_repeats)}) {
     const auto& results = (*searched)[0].results;
     if (ran && !results.empty() && results.front().objective > best + 1e-9) {
@@ -490,15 +515,12 @@ bool TreeRecognizer::evaluateDiversely(std::vector<EvaluatedIsm>& evaluated, dou
   return better;
 }
 
-TreeEvaluation TreeRecognizer::evaluateIsms(
-    const std::vector<Pose>& poses, const std::vector<std::vector<int>>& estimates_of_object,
-    const std::vector<std::vector<int>>* with_repeats, TreeRecognitionStats* stats,
-    ExactSearchBudget& budget) const {
+void TreeRecognizer::evaluateFirst(const std::vector<Pose>& poses,
+                                   const std::vector<std::vector<int>>& estimates_of_object,
+                                   std::vector<EvaluatedIsm>& evaluated,
+                                   std::vector<asr_ism::IsmRecognitionStats>& ism_stats) const {
   // Bottom-up evaluation (Algo. 2), level by level; the ISMs of one level are independent.
-  TreeEvaluation evaluation;
-  std::vector<EvaluatedIsm>& evaluated = evaluation.first;
   evaluated.resize(tree_.isms.size());
-  std::vector<asr_ism::IsmRecognitionStats> ism_stats(tree_.isms.size());
   const auto evaluate = [&](int ism, double from) {
     evaluateIsm(ism, from, evaluated, poses, estimates_of_object, ism_stats[ism]);
   };
@@ -511,17 +533,89 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
         evaluate(ism, kOnlyTheBest);
     }
   }
+}
+
+double TreeRecognizer::seenLeaves(const std::vector<std::vector<int>>& estimates_of_object) const {
+  return static_cast<double>(std::count_if(leaves_.begin(), leaves_.end(), [&](const Leaf& leaf) {
+    return !estimates_of_object[leaf.object].empty();
+  }));
+}
+
+bool TreeRecognizer::evaluateBestFittingRepeats(
+    const std::vector<EvaluatedIsm>& first, const std::vector<Pose>& poses,
+    const std::vector<std::vector<int>>& representatives,
+    const std::vector<std::vector<int>>& every_estimate,
+    std::vector<asr_ism::IsmRecognitionStats>& ism_stats, std::vector<EvaluatedIsm>& fitted) const {
+  const RepeatedDetectionTolerance tolerance{tree_.parameters.supportRadius(),
+                                             tree_.parameters.max_angle_deviation};
+  const double bound = seenLeaves(every_estimate);
+  std::vector<std::vector<int>> estimates = representatives;
+  std::vector<EvaluatedIsm> candidate;
+  bool better = false;
+  for (std::size_t per_object : {std::size_t{1}, kFittedPerObject}) {
+    for (int round = 0; round < kFittingRounds; ++round) {
+      const std::vector<EvaluatedIsm>& current = better ? fitted : first;
+      if (current[0].results.empty() || bestOf(current) >= bound - kObjectiveMargin)
+        return better;
+      std::vector<LeafOutcome> leaves;
+      std::vector<InstanceIsm> isms(tree_.isms.size());
+      InstanceAssembler(tree_, current).collect(0, 0, 1.0, leaves, isms);
+      std::vector<ExpectedPose> expected;
+      for (const LeafOutcome& leaf : leaves) {
+        if (leaf.estimate >= 0)
+          expected.push_back({leaf.object, leaf.expected});
+      }
+      auto next = bestFittingRepeats(expected, representatives, every_estimate, poses, tolerance,
+                                     per_object);
+      if (next == estimates)
+        break;
+      evaluateFirst(poses, next, candidate, ism_stats);
+      if (bestOf(candidate) <= bestOf(current) + kObjectiveMargin)
+        break;
+      fitted = std::move(candidate);
+      estimates = std::move(next);
+      better = true;
+    }
+  }
+  return better;
+}
+
+TreeEvaluation TreeRecognizer::evaluateIsms(
+    const std::vector<Pose>& poses, const std::vector<std::vector<int>>& estimates_of_object,
+    const std::vector<std::vector<int>>* with_repeats, TreeRecognitionStats* stats,
+    ExactSearchBudget& budget) const {
+  TreeEvaluation evaluation;
+  std::vector<EvaluatedIsm>& evaluated = evaluation.first;
+  std::vector<asr_ism::IsmRecognitionStats> ism_stats(tree_.isms.size());
+  evaluateFirst(poses, estimates_of_object, evaluated, ism_stats);
   const bool exact = parameters_.exact_best && !parameters_.pass_every_result;
-  if (exact && tree_.isms.size() > 1) {
+  const bool over_repeats = exact && parameters_.exact_over_repeats && with_repeats != nullptr;
+  if (over_repeats) {
+    evaluation.has_fitted = evaluateBestFittingRepeats(evaluated, poses, estimates_of_object,
+                                                       *with_repeats, ism_stats, evaluation.fitted);
+  }
+  // Where the repeats that fit best reach the bound (every seen leaf matched fully), that is the
+  // exhaustive search's best, and nothing need be searched.
+  const bool fitted_reach_bound =
+      evaluation.has_fitted &&
+      bestOf(evaluation.fitted) >= seenLeaves(*with_repeats) - kObjectiveMargin;
+  if (stats != nullptr) {
+    stats->fitted_repeats_better += evaluation.has_fitted ? 1 : 0;
+    stats->fitted_repeats_at_bound += fitted_reach_bound ? 1 : 0;
+  }
+  if (exact && tree_.isms.size() > 1 && !fitted_reach_bound) {
     evaluation.exact = evaluated;
     evaluation.has_exact =
         searchExactly(evaluation.exact, false, poses, estimates_of_object, ism_stats, budget, stats,
                       &TreeRecognitionStats::exact_searches_given_up);
   }
-  if (exact && parameters_.exact_over_repeats && with_repeats != nullptr) {
-    // Every result found over the representatives is one over every estimate too: their best
-    // is a lower bound the search over every repeat starts from (docs/recognition.md).
+  if (over_repeats && !fitted_reach_bound) {
+    // Every result found over the representatives (or the repeats that fit best) is one over
+    // every estimate too: their best is a lower bound the search over every repeat starts from
+    // (docs/recognition.md).
     evaluation.over_repeats = evaluation.has_exact ? evaluation.exact : evaluated;
+    if (evaluation.has_fitted && bestOf(evaluation.fitted) > bestOf(evaluation.over_repeats))
+      evaluation.over_repeats = evaluation.fitted;
     evaluation.has_over_repeats =
         searchExactly(evaluation.over_repeats, true, poses, *with_repeats, ism_stats, budget, stats,
                       &TreeRecognitionStats::repeat_searches_given_up);

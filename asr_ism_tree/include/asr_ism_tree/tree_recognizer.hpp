@@ -31,8 +31,10 @@ struct TreeRecognitionParameters {
   /// With `exact_best`, where repeated detections were merged: the exact search asks whether any
   /// combination of every estimate beats the best over the representatives, so the best
   /// instance is that of every estimate, within the exact search's limits
-  /// (TreeRecognitionStats::repeat_searches_given_up says where they ran out). false: the best
-  /// over the representatives, which can be lower (docs/recognition.md).
+  /// (TreeRecognitionStats::repeat_searches_given_up says where they ran out). It starts from
+  /// the repeats that fit the merged best instance best (best_fitting_repeats.hpp), which may
+  /// reach the bound, so that nothing need be searched. false: the best over the
+  /// representatives, which can be lower (docs/recognition.md).
   bool exact_over_repeats = true;
   /// Makes the best instance that of the exhaustive search (`pass_every_result`): after the first
   /// evaluation, every sub-ISM is asked for every further result that could still be part of a
@@ -113,6 +115,11 @@ struct TreeRecognitionStats {
   /// Searches over every repeated detection given up (over labellings): there the best over the
   /// representatives stands, and may fall short of the exhaustive search's.
   std::size_t repeat_searches_given_up = 0;
+  /// Where repeated detections were merged (over labellings): the evaluations over the repeats
+  /// that fit the merged best instance best that beat it, and of those the ones that reached the
+  /// bound (every seen leaf matched fully: the exhaustive search's best, nothing searched).
+  std::size_t fitted_repeats_better = 0;
+  std::size_t fitted_repeats_at_bound = 0;
   std::size_t exact_search_comparisons = 0;  // spent by the exact search (within isms as well)
   std::size_t exact_search_votes = 0;        // cast by the exact search (within isms as well)
   /// Exact searches (over labellings, first and over repeats) that completed without every
@@ -192,6 +199,23 @@ class TreeRecognizer {
                          const std::vector<std::vector<int>>& estimates_of_object,
                          std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
                          TreeRecognitionStats* stats) const;
+  // The first evaluation: each sub-ISM passes its few best results up.
+  void evaluateFirst(const std::vector<Pose>& poses,
+                     const std::vector<std::vector<int>>& estimates_of_object,
+                     std::vector<EvaluatedIsm>& evaluated,
+                     std::vector<asr_ism::IsmRecognitionStats>& ism_stats) const;
+  // The leaves whose object has an estimate: the most the root's objective can reach.
+  double seenLeaves(const std::vector<std::vector<int>>& estimates_of_object) const;
+  // Where repeated detections were merged: the tree evaluated over the repeats that fit the best
+  // instance of `first` best (best_fitting_repeats.hpp) into `fitted`, in rounds while the best
+  // rises. True if its best beats the first's; it is then a lower bound of the exhaustive
+  // search's best that is often that best itself.
+  bool evaluateBestFittingRepeats(const std::vector<EvaluatedIsm>& first,
+                                  const std::vector<Pose>& poses,
+                                  const std::vector<std::vector<int>>& representatives,
+                                  const std::vector<std::vector<int>>& every_estimate,
+                                  std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
+                                  std::vector<EvaluatedIsm>& fitted) const;
   // `with_repeats`: every estimate per object where `estimates_of_object` are the
   // representatives of repeated detections, nullptr where nothing was merged.
   TreeEvaluation evaluateIsms(const std::vector<Pose>& poses,
