@@ -398,7 +398,8 @@ TEST_F(ClutterSeries, BestAt250EstimatesIsThatOfTheExhaustiveSearch) {
     ASSERT_FALSE(merged.empty());
     ASSERT_FALSE(all.empty());
     EXPECT_EQ(exhaustive_stats.exact_searches_given_up, 0u);
-    EXPECT_EQ(stats.merged_estimates, 240u);
+    // The jitter (2 cm, 3 deg) lies within the tolerances: one detection of each object is kept.
+    EXPECT_EQ(stats.merged_estimates, input.size() - demonstration_.objects().size());
     EXPECT_EQ(stats.repeat_searches_given_up + stats.exact_searches_given_up, 0u);
     EXPECT_NEAR(merged.front().confidence, all.front().confidence, 1e-9);
   }
