@@ -24,17 +24,23 @@ Cell cellOf(const Eigen::Vector3d& p) {
           static_cast<std::int64_t>(std::floor(p.z() / kCell))};
 }
 
-// The cells a pose within kDistance of `coordinate` may lie in along one axis (as offsets): its
-// own, and a neighbour only where the coordinate is that close to the border (twice, for the
-// rounding of the division).
-std::vector<std::int64_t> offsetsAlong(double coordinate, std::int64_t cell) {
+// The cells a pose within kDistance of `coordinate` may lie in along one axis, as offsets from
+// its own (first to last): a neighbour only where the coordinate is that close to the border
+// (twice, for the rounding of the division). No allocation: this runs for every hypothesis
+// where a sub-ISM passes up every result reaching its bar.
+struct Offsets {
+  std::int64_t first = 0;
+  std::int64_t last = 0;
+};
+
+Offsets offsetsAlong(double coordinate, std::int64_t cell) {
   const double within = coordinate / kCell - static_cast<double>(cell);
   const double border = 2.0 * kDistance / kCell;
   if (within < border)
-    return {0, -1};
+    return {-1, 0};
   if (within > 1.0 - border)
     return {0, 1};
-  return {0};
+  return {0, 0};
 }
 
 }  // namespace
@@ -45,9 +51,12 @@ std::size_t CoincidentPoses::CellHash::operator()(const Cell& c) const {
 
 bool CoincidentPoses::contains(const asr_common::Pose& pose) const {
   const Cell own = cellOf(pose.position);
-  for (std::int64_t dx : offsetsAlong(pose.position.x(), own[0])) {
-    for (std::int64_t dy : offsetsAlong(pose.position.y(), own[1])) {
-      for (std::int64_t dz : offsetsAlong(pose.position.z(), own[2])) {
+  const Offsets x = offsetsAlong(pose.position.x(), own[0]);
+  const Offsets y = offsetsAlong(pose.position.y(), own[1]);
+  const Offsets z = offsetsAlong(pose.position.z(), own[2]);
+  for (std::int64_t dx = x.first; dx <= x.last; ++dx) {
+    for (std::int64_t dy = y.first; dy <= y.last; ++dy) {
+      for (std::int64_t dz = z.first; dz <= z.last; ++dz) {
         const auto found = cells_.find(Cell{own[0] + dx, own[1] + dy, own[2] + dz});
         if (found != cells_.end() &&
             std::any_of(found->second.begin(), found->second.end(),

@@ -30,6 +30,22 @@ inline asr_common::Pose perturbed(const asr_common::Pose& pose, std::mt19937& ra
   return result;
 }
 
+/// A repeated detection of `estimate`: shifted by `metres` x `gaussian` along each axis, then
+/// turned by `radians` x `gaussian` about a random axis (drawn before the angle).
+inline asr_common::ObjectEstimate jitteredRepeat(asr_common::ObjectEstimate estimate, double metres,
+                                                 double radians,
+                                                 std::normal_distribution<double>& gaussian,
+                                                 std::mt19937& random) {
+  estimate.pose.position +=
+      metres * Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random));
+  const Eigen::Vector3d axis(gaussian(random), gaussian(random), gaussian(random));
+  estimate.pose.orientation =
+      (estimate.pose.orientation *
+       Eigen::Quaterniond(Eigen::AngleAxisd(radians * gaussian(random), axis.normalized())))
+          .normalized();
+  return estimate;
+}
+
 /// One case of "seeing an object badly never scores lower than not seeing it": a random recorded
 /// set of `demonstration` with one random object perturbed (scale 0.05-1), and the set without it.
 struct OneObjectSeenBadly {

@@ -375,14 +375,8 @@ TEST(SyntheticScene, WorkWithRepeatedDetectionsDoesNotDependOnWhereTheWorldFrame
       for (const asr_common::ObjectEstimate& recorded : demonstration.configuration(step)) {
         const int copies = std::uniform_int_distribution<int>(0, 4)(random);  // 0: not seen
         for (int copy = 0; copy < copies; ++copy) {
-          asr_common::ObjectEstimate estimate = recorded;
-          estimate.pose.position +=
-              metres * Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random));
-          const Eigen::Vector3d axis(gaussian(random), gaussian(random), gaussian(random));
-          estimate.pose.orientation =
-              (estimate.pose.orientation *
-               Eigen::Quaterniond(Eigen::AngleAxisd(radians * gaussian(random), axis.normalized())))
-                  .normalized();
+          asr_common::ObjectEstimate estimate =
+              test_support::jitteredRepeat(recorded, metres, radians, gaussian, random);
           if (estimate.key.type == "Cup" && without_id < 3 &&
               std::uniform_int_distribution<int>(0, 2)(random) == 0) {
             estimate.key.id = "";

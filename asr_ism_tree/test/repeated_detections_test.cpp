@@ -14,6 +14,7 @@
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
 #include "instance_lookup.hpp"
+#include "random_perturbation.hpp"
 #include "synthetic_scene.hpp"
 
 namespace asr_ism_tree {
@@ -263,13 +264,8 @@ class RepeatsExactly : public ::testing::Test {
     for (const asr_common::ObjectEstimate& recorded : demonstration.configuration(step)) {
       const int copies = std::uniform_int_distribution<int>(0, 4)(random);  // 0: not seen
       for (int copy = 0; copy < copies; ++copy) {
-        asr_common::ObjectEstimate estimate = recorded;
-        estimate.pose.position +=
-            metres * Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random));
-        estimate.pose =
-            turned(estimate.pose, radians * gaussian(random),
-                   Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random)));
-        configuration.push_back(estimate);
+        configuration.push_back(
+            test_support::jitteredRepeat(recorded, metres, radians, gaussian, random));
       }
     }
     return configuration;
