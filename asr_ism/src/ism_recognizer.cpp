@@ -12,6 +12,7 @@
 #include "asr_ism/coincident_poses.hpp"
 #include "asr_ism/common_types.hpp"
 #include "asr_ism/compliance.hpp"
+#include "asr_ism/grid_cell.hpp"
 #include "asr_ism/voting_space.hpp"
 
 namespace asr_ism {
@@ -204,12 +205,10 @@ class CoincidentVotes {
   }
 
   Cell cellOf(double x, double y, double z) const {
-    return {static_cast<std::int64_t>(std::floor(x / reach_)),
-            static_cast<std::int64_t>(std::floor(y / reach_)),
-            static_cast<std::int64_t>(std::floor(z / reach_))};
+    return {gridCell(x, reach_), gridCell(y, reach_), gridCell(z, reach_)};
   }
   bool lowerHalf(double coordinate, std::int64_t cell) const {
-    return coordinate - static_cast<double>(cell) * reach_ < 0.5 * reach_;
+    return gridCell(coordinate - static_cast<double>(cell) * reach_, 0.5 * reach_) < 1;
   }
 
   const Votes& votes_;

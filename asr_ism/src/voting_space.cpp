@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "asr_ism/common_types.hpp"
+#include "asr_ism/grid_cell.hpp"
 
 namespace asr_ism {
 namespace {
@@ -35,7 +36,7 @@ std::uint64_t hashKey(std::uint64_t key) {
 }  // namespace
 
 std::int64_t VotingSpace::cellOf(double coordinate, double bin_size) {
-  return static_cast<std::int64_t>(std::floor(coordinate / bin_size));
+  return gridCell(coordinate, bin_size);
 }
 
 std::int64_t VotingSpace::xOrder(double x, double bin_size) {

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "asr_ism/coincident_poses.hpp"
+#include "asr_ism/grid_cell.hpp"
 
 namespace asr_ism_tree {
 namespace {
@@ -243,9 +244,8 @@ class EligibleVotes {
   Cell cellOf(const Eigen::Vector3d& world) const {
     const Eigen::Vector3d p =
         into_frame_ * (world - origin_) + Eigen::Vector3d::Constant(0.5 * radius_);
-    return {static_cast<std::int64_t>(std::floor(p.x() / radius_)),
-            static_cast<std::int64_t>(std::floor(p.y() / radius_)),
-            static_cast<std::int64_t>(std::floor(p.z() / radius_))};
+    return {asr_ism::gridCell(p.x(), radius_), asr_ism::gridCell(p.y(), radius_),
+            asr_ism::gridCell(p.z(), radius_)};
   }
 
   Steps& steps_;

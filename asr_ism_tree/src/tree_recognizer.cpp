@@ -788,13 +788,18 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
     const std::size_t merged =
         parameters_.merge_repeated_detections ? mergeRepeated(estimates_of_object, poses) : 0;
     counted.merged_estimates += merged;
-    const std::size_t given_up_before =
-        counted.exact_searches_given_up + counted.repeat_searches_given_up;
+    // A search that gave up, or completed with the pose gap open, may fall short of the
+    // exhaustive best, and so possibly of the best with an object left out.
+    const auto falling_short = [&counted] {
+      return counted.exact_searches_given_up + counted.repeat_searches_given_up +
+             counted.pose_gaps_left_open;
+    };
+    const std::size_t short_before = falling_short();
     const TreeEvaluation evaluation = evaluateIsms(
         poses, estimates_of_object, merged > 0 ? &every_estimate : nullptr, &counted, budget);
     RootResults chosen = rootResultsToAssemble(evaluation);
     TreeEvaluation over_fewer_objects;
-    if (counted.exact_searches_given_up + counted.repeat_searches_given_up > given_up_before &&
+    if (falling_short() > short_before &&
         searchObjectSubsets(poses, estimates_of_object, every_estimate, evaluation, counted,
                             over_fewer_objects))
       preferBestOf(over_fewer_objects, chosen);

@@ -33,11 +33,12 @@ using asr_common::testing::recording;
 
 constexpr double kDegree = M_PI / 180.0;
 // How much lower than without it a badly seen object may leave the best instance of a tree: where
-// the exact search completes (exact_best_search.hpp), rounding only. Where it gives up (beyond
-// its votes or comparisons caps), subsets of the seen objects are recognised too
-// (object_subsets.hpp), so the answer is at least that with the object removed unless their own
-// cap cut them short (counted and printed; 8 of these 1,320 recognitions, where the pose-diverse
-// evaluation's best holds anyway). Rounding either way.
+// the exact search completes and closes the pose gap (exact_best_search.hpp), rounding only.
+// Where it gives up (beyond its votes or comparisons caps) or leaves the gap open (beyond its pose
+// steps), subsets of the seen objects are recognised too (object_subsets.hpp), so the answer is
+// at least that with the object removed unless their own cap cut them short (counted and
+// printed; 15 of these 1,320 recognitions, where the property holds anyway). Rounding either
+// way.
 constexpr double kTolerance = 1e-9;
 
 struct SceneFile {
@@ -118,6 +119,8 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
   // Of the recognitions of subsets of the seen objects: how many, how many raised the best, and
   // the recognitions where they ran out (only there is the property not guaranteed).
   std::size_t subset_searches = 0, subsets_better = 0, subsets_cut = 0, most_subsets = 0;
+  // Recognitions whose search completed with the pose gap open (their best may fall short too).
+  std::size_t gaps_open = 0;
   for (const auto& [topology, tree] : scene.trees) {
     const TreeRecognizer recognizer(tree);
     for (int trial = 0; trial < 40; ++trial) {
@@ -146,6 +149,7 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
       subsets_better += changed_stats.object_subsets_better;
       most_subsets = std::max(most_subsets, changed_stats.object_subset_searches);
       subsets_cut += changed_stats.object_subset_searches_cut;
+      gaps_open += changed_stats.pose_gaps_left_open > 0 ? 1 : 0;
       EXPECT_GE(with, without - kTolerance) << topology << " tree, " << what;
     }
   }
@@ -160,7 +164,7 @@ TEST_P(RecordedScene, SeeingAnObjectBadlyNeverScoresLowerThanNotSeeingIt) {
             << ", with at most " << most_diverse_work << " comparisons; " << subset_searches
             << " recognitions of subsets of the seen objects (at most " << most_subsets
             << " in one) raised the best in " << subsets_better << ", ran out in " << subsets_cut
-            << "\n";
+            << "; the pose gap stayed open in " << gaps_open << "\n";
 }
 
 // A rigid motion: a shift of up to `max_shift` metres and a turn about the x, y or z axis or a
@@ -309,18 +313,21 @@ TEST_P(RecordedScene, WorkDoesNotDependOnWhereTheWorldFrameLies) {
 }
 
 // The same without recordings: a synthetic table of six objects, every object seen badly with
-// odds 1/2 or not at all with odds 1/6, star and complete trees.
+// odds 1/2 or not at all with odds 1/6, star and complete trees, 50 sets. On its ring, objects
+// lie exactly 1.5 bins apart, so votes derived from one estimate fall exactly on cell borders of
+// a grid anchored at another (asr_ism/grid_cell.hpp): without the nudge there, these draws
+// differed between frames in 14 of their checks (9-44 with other seeds).
 TEST(SyntheticScene, WorkDoesNotDependOnWhereTheWorldFrameLies) {
   const std::vector<asr_common::ObjectKey> objects = {
       {"Plate", "1"}, {"Cup", "1"}, {"Knife", "1"}, {"Fork", "1"}, {"Spoon", "1"}, {"Napkin", "1"}};
   const asr_ism::Demonstration demonstration = synthetic::demonstration("table", objects, 6);
-  std::mt19937 random(5);
+  std::mt19937 random(11);
   int capped_given_up = 0, cases = 0;
   for (const RelationTopology& topology :
        {RelationTopology::star(objects, 0), RelationTopology::complete(objects)}) {
     const IsmTree tree = generateIsmTree(demonstration, topology, {});
     std::vector<Configuration> sets;
-    for (int trial = 0; trial < 8; ++trial) {
+    for (int trial = 0; trial < 25; ++trial) {
       const std::size_t step =
           std::uniform_int_distribution<std::size_t>(0, demonstration.stepCount() - 1)(random);
       Configuration configuration;
@@ -350,7 +357,7 @@ TEST(SyntheticScene, WorkDoesNotDependOnWhereTheWorldFrameLies) {
 // without their id with odds 1/3 (at most three such, so at most 8 labellings). Seven objects:
 // on the ring of six, objects lie exactly 0.15 m (1.5 bins) apart along their axes, so votes
 // derived from one estimate fall exactly on bin borders of a frame anchored at another such
-// vote, where rounding decides (some comparisons differed between frames).
+// vote, where rounding decided before asr_ism/grid_cell.hpp (some comparisons differed).
 TEST(SyntheticScene, WorkWithRepeatedDetectionsDoesNotDependOnWhereTheWorldFrameLies) {
   const std::vector<asr_common::ObjectKey> objects = {
       {"Plate", "1"}, {"Cup", "1"},    {"Cup", "2"},  {"Knife", "1"},

@@ -86,7 +86,8 @@ struct TreeRecognitionParameters {
   /// vote-to-hypothesis comparisons; votes are capped as in the exact search, so it adds at most
   /// about as much time as the exact search may take.
   std::size_t diverse_max_comparisons = 5000000;
-  /// Where the search over every seen object gave up: further recognitions with seen objects
+  /// Where the search over every seen object gave up or completed with the pose gap open (its
+  /// best may then fall short of the exhaustive one): further recognitions with seen objects
   /// left out (object_subsets.hpp), the best of all standing, so that the answer is at least
   /// that with any object removed (seeing an object badly never scores lower than not seeing
   /// it). Subsets that cannot beat the best found (by their number of leaves) or that lie
@@ -141,8 +142,8 @@ struct TreeRecognitionStats {
   std::size_t diverse_evaluations_better = 0;
   std::size_t diverse_evaluations_given_up = 0;
   std::size_t diverse_comparisons = 0;
-  /// Recognitions of subsets of the seen objects where the search over all gave up (over
-  /// labellings), those whose best beat it, the labellings where
+  /// Recognitions of subsets of the seen objects where the search over all gave up or left the
+  /// pose gap open (over labellings), those whose best beat it, the labellings where
   /// `object_subsets_max_work` ran out before every subset that could beat the best was
   /// recognised (there the answer may fall below that with some object removed), and the work
   /// those recognitions made (as `object_subsets_max_work` counts it).
