@@ -4,11 +4,44 @@
 #include <utility>
 
 namespace asr_ism_tree {
+namespace {
+
+// How far `pose` lies from the expected poses `where`: the sum of the squared distance and angle,
+// each in units of `tolerance`.
+double deviationFrom(const asr_common::Pose& pose, const std::vector<const ExpectedPose*>& where,
+                     const RepeatedDetectionTolerance& tolerance) {
+  double deviation = 0.0;
+  for (const ExpectedPose* there : where) {
+    const double distance = (pose.position - there->pose.position).norm() / tolerance.distance;
+    const double angle =
+        asr_common::angleBetween(pose.orientation, there->pose.orientation) / tolerance.angle;
+    deviation += distance * distance + angle * angle;
+  }
+  return deviation;
+}
+
+// Marks in `chosen` the `count` of `estimates` (indices into `poses`) nearest to `where`; the
+// first of equals wins.
+void markNearest(const std::vector<int>& estimates, const std::vector<asr_common::Pose>& poses,
+                 const std::vector<const ExpectedPose*>& where,
+                 const RepeatedDetectionTolerance& tolerance, std::size_t count,
+                 std::vector<bool>& chosen) {
+  std::vector<std::pair<double, std::size_t>> ranked;
+  ranked.reserve(estimates.size());
+  for (std::size_t i = 0; i < estimates.size(); ++i)
+    ranked.emplace_back(deviationFrom(poses[estimates[i]], where, tolerance), i);
+  count = std::min(count, ranked.size());
+  std::partial_sort(ranked.begin(), ranked.begin() + count, ranked.end());
+  for (std::size_t k = 0; k < count; ++k)
+    chosen[ranked[k].second] = true;
+}
+
+}  // namespace
 
 std::vector<std::vector<int>> bestFittingRepeats(
     const std::vector<ExpectedPose>& expected, const std::vector<std::vector<int>>& representatives,
     const std::vector<std::vector<int>>& every_estimate, const std::vector<asr_common::Pose>& poses,
-    const RepeatedDetectionTolerance& tolerance, std::size_t per_object) {
+    const RepeatedDetectionTolerance& tolerance, std::size_t per_object, bool nearest_to_each) {
   std::vector<std::vector<int>> chosen(every_estimate.size());
   for (std::size_t object = 0; object < every_estimate.size(); ++object) {
     std::vector<const ExpectedPose*> where;
@@ -20,26 +53,18 @@ std::vector<std::vector<int>> bestFittingRepeats(
       chosen[object] = representatives[object];
       continue;
     }
-    // (deviation, position in every_estimate): the first of equals wins.
-    std::vector<std::pair<double, std::size_t>> ranked;
-    for (std::size_t i = 0; i < every_estimate[object].size(); ++i) {
-      const asr_common::Pose& pose = poses[every_estimate[object][i]];
-      double deviation = 0.0;
-      for (const ExpectedPose* there : where) {
-        const double distance = (pose.position - there->pose.position).norm() / tolerance.distance;
-        const double angle =
-            asr_common::angleBetween(pose.orientation, there->pose.orientation) / tolerance.angle;
-        deviation += distance * distance + angle * angle;
-      }
-      ranked.emplace_back(deviation, i);
+    // Nearest to all its expected poses at once, and nearest to each: where several ISMs hold
+    // the object, the best instance may match a different repeat in each.
+    std::vector<bool> taken(every_estimate[object].size(), false);
+    markNearest(every_estimate[object], poses, where, tolerance, per_object, taken);
+    if (nearest_to_each && where.size() > 1) {
+      for (const ExpectedPose* there : where)
+        markNearest(every_estimate[object], poses, {there}, tolerance, per_object, taken);
     }
-    const std::size_t count = std::min(per_object, ranked.size());
-    std::partial_sort(ranked.begin(), ranked.begin() + count, ranked.end());
-    ranked.resize(count);
-    std::sort(ranked.begin(), ranked.end(),
-              [](const auto& a, const auto& b) { return a.second < b.second; });
-    for (const auto& [deviation, i] : ranked)
-      chosen[object].push_back(every_estimate[object][i]);
+    for (std::size_t i = 0; i < taken.size(); ++i) {
+      if (taken[i])
+        chosen[object].push_back(every_estimate[object][i]);
+    }
   }
   return chosen;
 }

@@ -18,13 +18,15 @@ struct ExpectedPose {
 /// The estimates a further evaluation over repeated detections starts from: per object with
 /// expected poses, the `per_object` estimates of `every_estimate` nearest to them (the sum over
 /// its expected poses of the squared distance and angle, each in units of `tolerance`; the first
-/// of equals), its representatives elsewhere left out; objects without expected poses keep
+/// of equals) and, if `nearest_to_each`, the `per_object` nearest to each of its expected poses
+/// as well (where several ISMs hold an object, the best instance may match a different repeat
+/// in each), its representatives elsewhere left out; objects without expected poses keep
 /// their representatives. Each list keeps the order of `every_estimate`. Linear in the
 /// estimates: the exhaustive best often combines repeats that fit such an instance well, and a
 /// best found early lets the exact search prune the rest.
 std::vector<std::vector<int>> bestFittingRepeats(
     const std::vector<ExpectedPose>& expected, const std::vector<std::vector<int>>& representatives,
     const std::vector<std::vector<int>>& every_estimate, const std::vector<asr_common::Pose>& poses,
-    const RepeatedDetectionTolerance& tolerance, std::size_t per_object);
+    const RepeatedDetectionTolerance& tolerance, std::size_t per_object, bool nearest_to_each);
 
 }  // namespace asr_ism_tree

@@ -552,7 +552,9 @@ bool TreeRecognizer::evaluateBestFittingRepeats(
   std::vector<std::vector<int>> estimates = representatives;
   std::vector<EvaluatedIsm> candidate;
   bool better = false;
-  for (std::size_t per_object : {std::size_t{1}, kFittedPerObject}) {
+  const std::pair<std::size_t, bool> stages[] = {
+      {1, false}, {kFittedPerObject, false}, {1, true}, {kFittedPerObject, true}};
+  for (const auto& [per_object, nearest_to_each] : stages) {
     for (int round = 0; round < kFittingRounds; ++round) {
       const std::vector<EvaluatedIsm>& current = better ? fitted : first;
       if (current[0].results.empty() || bestOf(current) >= bound - kObjectiveMargin)
@@ -566,7 +568,7 @@ bool TreeRecognizer::evaluateBestFittingRepeats(
           expected.push_back({leaf.object, leaf.expected});
       }
       auto next = bestFittingRepeats(expected, representatives, every_estimate, poses, tolerance,
-                                     per_object);
+                                     per_object, nearest_to_each);
       if (next == estimates)
         break;
       evaluateFirst(poses, next, candidate, ism_stats);

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "../bench/clutter_series.hpp"
+#include "../src/best_fitting_repeats.hpp"
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -84,6 +85,27 @@ TEST(MergeRepeatedDetections, GroupsStayApartAcrossGridCells) {
   for (double x : {0.045, 0.05, 0.055, 0.345, 0.35, 0.355})
     poses.emplace_back(Eigen::Vector3d(x, 0.0, 0.0), Eigen::Quaterniond::Identity());
   EXPECT_EQ(mergeRepeatedDetections(allOf(poses), poses, kTolerance), (std::vector<int>{1, 4}));
+}
+
+TEST(BestFittingRepeats, NearestToEachExpectedPoseWhereSeveralISMsHoldTheObject) {
+  // Object 0 is expected at x = 0 and x = 0.4 (two ISMs hold it), object 1 at x = 2 only, object
+  // 2 nowhere. Repeats of object 0 at 0.01, 0.2 (nearest to both at once), 0.39 and 1.0.
+  std::vector<Pose> poses;
+  for (double x : {0.01, 0.2, 0.39, 1.0, 2.05, 1.9, 5.0})
+    poses.emplace_back(Eigen::Vector3d(x, 0.0, 0.0), Eigen::Quaterniond::Identity());
+  const std::vector<ExpectedPose> expected = {
+      {0, Pose(Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Quaterniond::Identity())},
+      {0, Pose(Eigen::Vector3d(0.4, 0.0, 0.0), Eigen::Quaterniond::Identity())},
+      {1, Pose(Eigen::Vector3d(2.0, 0.0, 0.0), Eigen::Quaterniond::Identity())}};
+  const std::vector<std::vector<int>> every = {{0, 1, 2, 3}, {4, 5}, {6}};
+  const std::vector<std::vector<int>> representatives = {{1}, {4}, {6}};
+  EXPECT_EQ(bestFittingRepeats(expected, representatives, every, poses, kTolerance, 1, false),
+            (std::vector<std::vector<int>>{{1}, {4}, {6}}));
+  // The repeat nearest each expected pose joins (in the order of the estimates).
+  EXPECT_EQ(bestFittingRepeats(expected, representatives, every, poses, kTolerance, 1, true),
+            (std::vector<std::vector<int>>{{0, 1, 2}, {4}, {6}}));
+  EXPECT_EQ(bestFittingRepeats(expected, representatives, every, poses, kTolerance, 2, true),
+            (std::vector<std::vector<int>>{{0, 1, 2}, {4, 5}, {6}}));
 }
 
 // Recognition with repeated detections: a scene of five objects, each seen `copies` times with
