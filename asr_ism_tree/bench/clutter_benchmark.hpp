@@ -19,7 +19,8 @@ struct ClutterRow {
   double best_confidence = 0.0;
   std::size_t instances = 0;
   std::size_t merged = 0;  // repeated detections merged away
-  // The search over every repeat ran out of its work limits: the merged best stands.
+  // A search (over every repeat, or the first) ran out of its work limits: the best found
+  // before it stands.
   bool repeat_search_given_up = false;
   bool run = false;  // false: skipped, a smaller size of this topology took too long
   // The best confidence of the exhaustive search (every repeated detection enters: recognition
@@ -48,5 +49,15 @@ std::string comparedWithExhaustive(const ClutterRow& row);
 
 /// The series as a table.
 void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows);
+
+/// The series without its recorded set (every copy jittered, sizes as above): no repeat fits
+/// exactly, so the searches may give up (`repeat_search_given_up`), and the exhaustive best is
+/// not known (not measured).
+std::vector<ClutterRow> benchmarkJitteredClutter(const std::string& recordings,
+                                                 const BenchmarkSettings& settings,
+                                                 std::ostream& progress);
+
+/// That series as a table.
+void printJitteredClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows);
 
 }  // namespace asr_ism_tree::bench

@@ -40,15 +40,17 @@ inline std::vector<std::pair<std::string, IsmTree>> clutterTrees(
   return trees;
 }
 
-/// A configuration of `estimates` estimates: `recorded` itself, then copies of its estimates
-/// (keys kept) with Gaussian jitter of 2 cm per axis and 3 deg about a random axis, seeded.
+/// A configuration of `estimates` estimates: `recorded` itself (unless not `recorded_first`),
+/// then copies of its estimates (keys kept) with Gaussian jitter of 2 cm per axis and 3 deg
+/// about a random axis, seeded.
 inline asr_common::Configuration clutteredCopies(const asr_common::Configuration& recorded,
-                                                 std::size_t estimates, std::uint32_t seed) {
+                                                 std::size_t estimates, std::uint32_t seed,
+                                                 bool recorded_first = true) {
   asr_ism::PortableRandom random(seed);
   asr_common::Configuration configuration;
   for (std::size_t i = 0; i < estimates; ++i) {
     asr_common::ObjectEstimate estimate = recorded[i % recorded.size()];
-    if (i >= recorded.size()) {
+    if (i >= recorded.size() || !recorded_first) {
       const Eigen::Vector3d shift(random.gaussian(), random.gaussian(), random.gaussian());
       const Eigen::Vector3d axis(random.gaussian(), random.gaussian(), random.gaussian());
       estimate.pose.position += 0.02 * shift;

@@ -37,15 +37,17 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
 
   const bool clutter_only = options.flag("clutter-only");
   std::vector<SceneRow> scene_rows;
-  std::vector<ClutterRow> clutter_rows;
+  std::vector<ClutterRow> clutter_rows, jittered_clutter_rows;
   const auto recordings =
       asr_common::cli::benchmarkRecordings(options, ASR_RECORDINGS_DIR, "asr_bench", progress);
   if (recordings) {
     progress << "kitchen scenes from " << *recordings << "\n";
     if (!clutter_only)
       scene_rows = benchmarkKitchenScenes(*recordings, settings, progress);
-    if (!options.flag("no-clutter"))
+    if (!options.flag("no-clutter")) {
       clutter_rows = benchmarkClutter(*recordings, settings, progress);
+      jittered_clutter_rows = benchmarkJitteredClutter(*recordings, settings, progress);
+    }
   }
 
   std::vector<SyntheticRow> synthetic_rows;
@@ -63,7 +65,7 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   }
 
   const std::vector<asr_common::cli::Target> checks =
-      checkTargets(scene_rows, synthetic_rows, clutter_rows);
+      checkTargets(scene_rows, synthetic_rows, clutter_rows, jittered_clutter_rows);
   if (json) {
     std::cout << sceneRowsToJson(scene_rows).dump(2) << "\n";
     asr_common::cli::printTargets(progress, checks);
@@ -78,6 +80,8 @@ int runRecognitionCommand(const std::vector<std::string>& arguments) {
   }
   if (!clutter_rows.empty()) {
     printClutterTable(std::cout, clutter_rows);
+    std::cout << "\n";
+    printJitteredClutterTable(std::cout, jittered_clutter_rows);
     std::cout << "\n";
   }
   if (!synthetic_rows.empty()) {
