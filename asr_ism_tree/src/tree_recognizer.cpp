@@ -54,7 +54,9 @@ constexpr double kDiverseFraction = 0.1;
 // detector saw best is among the repeats, this reaches it at the cost of one evaluation over
 // the representatives), then, below the bound, the three best-fitting (on the clutter series
 // without its recorded set, complete tree, 100 / 250 / 1,000 estimates, the best rose from
-// 0.946 / 0.967 / 0.969 with one to 0.971 / 0.975 / 0.992; five added < 0.002).
+// 0.946 / 0.967 / 0.969 with one to 0.971 / 0.975 / 0.992; five added < 0.002); then the same
+// two with the repeats nearest to each expected pose of an object as well (a complete tree's
+// best may match a different repeat in each ISM: up to 0.010 more, docs/recognition.md).
 constexpr int kFittingRounds = 3;
 constexpr std::size_t kFittedPerObject = 3;
 
