@@ -23,12 +23,14 @@ constexpr double kNothing = std::numeric_limits<double>::infinity();
 }  // namespace
 
 ExactBestSearch::ExactBestSearch(const IsmTree& tree, std::vector<bool> object_seen,
-                                 Evaluate evaluate, BestObjective best, Start start)
+                                 Evaluate evaluate, BestObjective best, Start start,
+                                 double known_best)
     : tree_(tree),
       object_seen_(std::move(object_seen)),
       evaluate_(std::move(evaluate)),
       best_(std::move(best)),
       start_(start),
+      known_best_(known_best),
       maximum_(tree.isms.size(), kNothing),
       searched_from_(tree.isms.size(), kNothing),
       stamp_(tree.isms.size(), 0) {}
@@ -91,7 +93,8 @@ bool ExactBestSearch::run(const std::vector<int>& bottom_up) {
   // exact, and nothing need be searched.
   for (int ism : bottom_up)
     maximum_[ism] = boundOf(ism);
-  if (best_(0) >= boundOf(0) - kMargin)
+  const auto root_bar = [&] { return std::max(best_(0), known_best_); };
+  if (root_bar() >= boundOf(0) - kMargin)
     return false;
   for (int ism : bottom_up) {
     if (ism == 0)
@@ -104,9 +107,9 @@ bool ExactBestSearch::run(const std::vector<int>& bottom_up) {
       require(ism, best_(ism));
     maximum_[ism] = best_(ism);
   }
-  if (best_(0) >= boundOf(0) - kMargin)
+  if (root_bar() >= boundOf(0) - kMargin)
     return false;
-  require(0, best_(0));
+  require(0, root_bar());
   // Parents of ISMs evaluated anew must follow their children's new results.
   for (int ism : bottom_up) {
     if (stale(ism))

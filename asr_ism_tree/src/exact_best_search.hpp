@@ -49,13 +49,18 @@ class ExactBestSearch {
   using BestObjective = std::function<double(int ism)>;
 
   /// `object_seen`: per object of the tree, whether any estimate may stand for it.
+  /// `known_best`: an objective some instance is known to reach (found over other estimates):
+  /// the root seeks only results beyond it and those of its current results.
   ExactBestSearch(const IsmTree& tree, std::vector<bool> object_seen, Evaluate evaluate,
-                  BestObjective best, Start start = Start::kFirstEvaluation);
+                  BestObjective best, Start start = Start::kFirstEvaluation,
+                  double known_best = 0.0);
 
   /// `bottom_up`: every ISM, children before parents. True if the root was evaluated anew: its
-  /// best result is then that of the exhaustive search, and every sub-ISM's results are those its
-  /// parent's links refer to. False: the first evaluation's best already was (with
-  /// Start::kLowerBounds: the starting results' best reaches the bound, so it is the maximum).
+  /// best result, if it has one, is then that of the exhaustive search (none: nothing beats
+  /// `known_best`), and every sub-ISM's results are those its parent's links refer to. False:
+  /// the first evaluation's best (or `known_best`) already was at least the exhaustive search's
+  /// (with Start::kLowerBounds: the starting results' best reaches the bound, so it is the
+  /// maximum).
   bool run(const std::vector<int>& bottom_up);
 
  private:
@@ -73,6 +78,7 @@ class ExactBestSearch {
   const Evaluate evaluate_;
   const BestObjective best_;
   const Start start_;
+  const double known_best_;
   std::vector<double> maximum_;        // exact maximum objective per sub-ISM, once known
   std::vector<double> searched_from_;  // every result reaching it is passed up
   std::vector<unsigned> stamp_;        // when each ISM was last evaluated

@@ -372,7 +372,11 @@ void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>
     selection.best_count = parameters_.results_passed_up;
     selection.every_result_from = parameters_.pass_every_result ? 0.0 : from;
   } else if (std::isfinite(from)) {
+    // A root asked for results beyond a best found before serves callers that use only its best
+    // (the exact searches, the fitted and the diverse evaluations): with one result the bar rises
+    // to the best found so far, not only to `from`.
     selection.at_least = from;
+    selection.best_count = 1;
   }
   if (budget == nullptr) {
     current.results =
@@ -411,7 +415,7 @@ void TreeRecognizer::evaluateIsm(int ism, double from, std::vector<EvaluatedIsm>
 }
 
 bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool from_lower_bounds,
-                                   const std::vector<Pose>& poses,
+                                   double known_best, const std::vector<Pose>& poses,
                                    const std::vector<std::vector<int>>& estimates_of_object,
                                    std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
                                    ExactSearchBudget& budget, TreeRecognitionStats* stats,
@@ -436,7 +440,7 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
   const bool seek_poses = !budget.pose_gap_open;
   budget.pose_gap_open = true;
   try {
-    if (!ExactBestSearch(tree_, object_seen, evaluate, best, start).run(bottom_up_)) {
+    if (!ExactBestSearch(tree_, object_seen, evaluate, best, start, known_best).run(bottom_up_)) {
       budget.pose_gap_open = !seek_poses;
       return false;
     }
@@ -445,7 +449,7 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
       std::vector<EvaluatedIsm> without_poses = std::move(evaluated);
       evaluated = starting_results;
       try {
-        ExactBestSearch(tree_, object_seen, evaluate, best, start).run(bottom_up_);
+        ExactBestSearch(tree_, object_seen, evaluate, best, start, known_best).run(bottom_up_);
       } catch (const ExactSearchTooLarge&) {
         budget.pose_gap_open = true;
         evaluated = std::move(without_poses);
@@ -459,8 +463,8 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
   }
   // Over the same estimates, a second evaluation may find a better instance than the first.
   const bool better =
-      !from_lower_bounds &&
-      evaluateDiversely(evaluated, best_before, poses, estimates_of_object, ism_stats, stats);
+      !from_lower_bounds && evaluateDiversely(evaluated, std::max(best_before, known_best), poses,
+                                              estimates_of_object, ism_stats, stats);
   // The best found before stands; the relaxed bound, if asked for, may show that nothing beats
   // it, or by how much something could.
   std::optional<double> bound;
@@ -472,7 +476,7 @@ bool TreeRecognizer::searchExactly(std::vector<EvaluatedIsm>& evaluated, bool fr
     if (stats != nullptr)
       stats->relaxed_bound_work += work;
   }
-  const double found = better ? best(0) : best_before;
+  const double found = better ? best(0) : std::max(best_before, known_best);
   const double gap = bound ? std::max(0.0, *bound - found) : kUnbounded;
   if (stats != nullptr) {
     if (gap <= kObjectiveMargin) {
@@ -520,11 +524,13 @@ bool TreeRecognizer::evaluateDiversely(std::vector<EvaluatedIsm>& evaluated, dou
 void TreeRecognizer::evaluateFirst(const std::vector<Pose>& poses,
                                    const std::vector<std::vector<int>>& estimates_of_object,
                                    std::vector<EvaluatedIsm>& evaluated,
-                                   std::vector<asr_ism::IsmRecognitionStats>& ism_stats) const {
+                                   std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
+                                   double root_at_least) const {
   // Bottom-up evaluation (Algo. 2), level by level; the ISMs of one level are independent.
   evaluated.resize(tree_.isms.size());
   const auto evaluate = [&](int ism, double from) {
-    evaluateIsm(ism, from, evaluated, poses, estimates_of_object, ism_stats[ism]);
+    evaluateIsm(ism, ism == 0 ? root_at_least : from, evaluated, poses, estimates_of_object,
+                ism_stats[ism]);
   };
   constexpr double kOnlyTheBest = std::numeric_limits<double>::infinity();
   for (const std::vector<int>& level : levels_) {
@@ -573,7 +579,10 @@ bool TreeRecognizer::evaluateBestFittingRepeats(
                                      per_object, nearest_to_each);
       if (next == estimates)
         break;
-      evaluateFirst(poses, next, candidate, ism_stats);
+      // Only a better best counts: the root skips every hypothesis below it (where its
+      // hypotheses match no input exactly, as in jittered clutter, scoring every one cost the
+      // complete tree most of this evaluation).
+      evaluateFirst(poses, next, candidate, ism_stats, bestOf(current) + kObjectiveMargin);
       if (bestOf(candidate) <= bestOf(current) + kObjectiveMargin)
         break;
       fitted = std::move(candidate);
@@ -608,10 +617,15 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
     stats->fitted_repeats_at_bound += fitted_reach_bound ? 1 : 0;
   }
   if (exact && tree_.isms.size() > 1 && !fitted_reach_bound) {
+    // Over the representatives only an instance better than the repeats that fit best matters:
+    // the search asks for nothing below them (in the clutter series without its recorded set
+    // the complete tree's search ran out of comparisons at its root; with that bar the bound
+    // alone shows that no representatives beat the fitted repeats).
+    const double known_best = evaluation.has_fitted ? bestOf(evaluation.fitted) : 0.0;
     evaluation.exact = evaluated;
     evaluation.has_exact =
-        searchExactly(evaluation.exact, false, poses, estimates_of_object, ism_stats, budget, stats,
-                      &TreeRecognitionStats::exact_searches_given_up);
+        searchExactly(evaluation.exact, false, known_best, poses, estimates_of_object, ism_stats,
+                      budget, stats, &TreeRecognitionStats::exact_searches_given_up);
   }
   if (over_repeats && !fitted_reach_bound) {
     // Every result found over the representatives (or the repeats that fit best) is one over
@@ -621,8 +635,8 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
     if (evaluation.has_fitted && bestOf(evaluation.fitted) > bestOf(evaluation.over_repeats))
       evaluation.over_repeats = evaluation.fitted;
     evaluation.has_over_repeats =
-        searchExactly(evaluation.over_repeats, true, poses, *with_repeats, ism_stats, budget, stats,
-                      &TreeRecognitionStats::repeat_searches_given_up);
+        searchExactly(evaluation.over_repeats, true, 0.0, poses, *with_repeats, ism_stats, budget,
+                      stats, &TreeRecognitionStats::repeat_searches_given_up);
   }
   if (stats != nullptr) {
     for (const auto& s : ism_stats)

@@ -442,5 +442,35 @@ TEST_F(ClutterSeries, EverySizeReachesTheBestOfTheRecordedSetAmongIt) {
   }
 }
 
+TEST_F(ClutterSeries, WithoutTheRecordedSetNoRepresentativesBeatTheRepeatsThatFitBest) {
+  // Every copy jittered: the repeats that fit best beat the representatives' first best, so the
+  // search over the representatives seeks only what beats them. The complete tree's search gave
+  // up there before (its root, asked for everything above the first best, ran out of
+  // comparisons); it now completes, and its answer stands against the representatives'
+  // exhaustive search (limits raised a hundredfold, the search over every repeat off).
+  const Configuration recorded = demonstration_.configuration(bench::kClutterRecordedSet);
+  const Configuration input = bench::clutteredCopies(recorded, 1000, 1, false);
+  const auto trees = bench::clutterTrees(demonstration_);
+  const auto complete = std::find_if(trees.begin(), trees.end(),
+                                     [](const auto& named) { return named.first == "complete"; });
+  ASSERT_NE(complete, trees.end());
+  TreeRecognitionParameters parameters;
+  parameters.max_estimates = input.size();
+  TreeRecognitionStats stats;
+  const auto instances = TreeRecognizer(complete->second, parameters).recognize(input, &stats);
+  TreeRecognitionParameters representatives_only = bench::exhaustiveClutterParameters(input.size());
+  representatives_only.merge_repeated_detections = true;
+  representatives_only.exact_over_repeats = false;
+  TreeRecognitionStats reference_stats;
+  const auto reference =
+      TreeRecognizer(complete->second, representatives_only).recognize(input, &reference_stats);
+  ASSERT_FALSE(instances.empty());
+  ASSERT_FALSE(reference.empty());
+  EXPECT_EQ(stats.fitted_repeats_better, 1u);
+  EXPECT_EQ(stats.exact_searches_given_up, 0u);
+  EXPECT_EQ(reference_stats.exact_searches_given_up, 0u);
+  EXPECT_GT(instances.front().confidence, reference.front().confidence + 1e-9);
+}
+
 }  // namespace
 }  // namespace asr_ism_tree

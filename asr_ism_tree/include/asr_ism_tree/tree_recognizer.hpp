@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "asr_ism/ism_recognizer.hpp"
@@ -200,11 +201,13 @@ class TreeRecognizer {
                          const std::vector<std::vector<int>>& estimates_of_object,
                          std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
                          TreeRecognitionStats* stats) const;
-  // The first evaluation: each sub-ISM passes its few best results up.
+  // The first evaluation: each sub-ISM passes its few best results up; the root keeps only
+  // results reaching `root_at_least` (a caller after a better best skips everything else).
   void evaluateFirst(const std::vector<Pose>& poses,
                      const std::vector<std::vector<int>>& estimates_of_object,
                      std::vector<EvaluatedIsm>& evaluated,
-                     std::vector<asr_ism::IsmRecognitionStats>& ism_stats) const;
+                     std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
+                     double root_at_least = -std::numeric_limits<double>::infinity()) const;
   // The leaves whose object has an estimate: the most the root's objective can reach.
   double seenLeaves(const std::vector<std::vector<int>>& estimates_of_object) const;
   // Where repeated detections were merged: the tree evaluated over the repeats that fit the best
@@ -225,10 +228,11 @@ class TreeRecognizer {
                               TreeRecognitionStats* stats, ExactSearchBudget& budget) const;
   // The exact search (exact_best_search.hpp) from the results in `evaluated`, which are those of
   // a first evaluation over `estimates_of_object` or, `from_lower_bounds`, over a subset of them.
-  // True if the root holds its results; false where nothing could be better or the budget ran
-  // out (counted in `given_up`).
+  // Only root results beyond `known_best` (an instance found over other estimates) are sought.
+  // True if the root holds its results (none: nothing beats `known_best`); false where nothing
+  // could be better or the budget ran out (counted in `given_up`).
   bool searchExactly(std::vector<EvaluatedIsm>& evaluated, bool from_lower_bounds,
-                     const std::vector<Pose>& poses,
+                     double known_best, const std::vector<Pose>& poses,
                      const std::vector<std::vector<int>>& estimates_of_object,
                      std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
                      ExactSearchBudget& budget, TreeRecognitionStats* stats,
