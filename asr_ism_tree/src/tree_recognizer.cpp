@@ -596,7 +596,7 @@ bool TreeRecognizer::evaluateBestFittingRepeats(
 TreeEvaluation TreeRecognizer::evaluateIsms(
     const std::vector<Pose>& poses, const std::vector<std::vector<int>>& estimates_of_object,
     const std::vector<std::vector<int>>* with_repeats, TreeRecognitionStats* stats,
-    ExactSearchBudget& budget) const {
+    ExactSearchBudget& budget, double known_best) const {
   TreeEvaluation evaluation;
   std::vector<EvaluatedIsm>& evaluated = evaluation.first;
   std::vector<asr_ism::IsmRecognitionStats> ism_stats(tree_.isms.size());
@@ -621,11 +621,11 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
     // the search asks for nothing below them (in the clutter series without its recorded set
     // the complete tree's search ran out of comparisons at its root; with that bar the bound
     // alone shows that no representatives beat the fitted repeats).
-    const double known_best = evaluation.has_fitted ? bestOf(evaluation.fitted) : 0.0;
+    const double fitted_best = evaluation.has_fitted ? bestOf(evaluation.fitted) : 0.0;
     evaluation.exact = evaluated;
-    evaluation.has_exact =
-        searchExactly(evaluation.exact, false, known_best, poses, estimates_of_object, ism_stats,
-                      budget, stats, &TreeRecognitionStats::exact_searches_given_up);
+    evaluation.has_exact = searchExactly(evaluation.exact, false, std::max(known_best, fitted_best),
+                                         poses, estimates_of_object, ism_stats, budget, stats,
+                                         &TreeRecognitionStats::exact_searches_given_up);
   }
   if (over_repeats && !fitted_reach_bound) {
     // Every result found over the representatives (or the repeats that fit best) is one over
@@ -635,8 +635,8 @@ TreeEvaluation TreeRecognizer::evaluateIsms(
     if (evaluation.has_fitted && bestOf(evaluation.fitted) > bestOf(evaluation.over_repeats))
       evaluation.over_repeats = evaluation.fitted;
     evaluation.has_over_repeats =
-        searchExactly(evaluation.over_repeats, true, 0.0, poses, *with_repeats, ism_stats, budget,
-                      stats, &TreeRecognitionStats::repeat_searches_given_up);
+        searchExactly(evaluation.over_repeats, true, known_best, poses, *with_repeats, ism_stats,
+                      budget, stats, &TreeRecognitionStats::repeat_searches_given_up);
   }
   if (stats != nullptr) {
     for (const auto& s : ism_stats)
@@ -742,8 +742,11 @@ bool TreeRecognizer::searchObjectSubsets(const std::vector<Pose>& poses,
     ExactSearchBudget budget{
         parameters_.exact_search_max_votes, parameters_.exact_search_max_comparisons,
         parameters_.exact_search_max_total_votes, parameters_.exact_search_max_pose_steps};
-    TreeEvaluation evaluation = evaluateIsms(
-        poses, representatives, representatives != all ? &all : nullptr, &spent, budget);
+    // Only a better best matters: where the searches complete without one, the subset's
+    // exhaustive best is no better than the best found, nor is any subset within it.
+    TreeEvaluation evaluation =
+        evaluateIsms(poses, representatives, representatives != all ? &all : nullptr, &spent,
+                     budget, search.best());
     addIsmWork(stats.isms, spent.isms);
     work += spent.isms.comparisons + budget.pose_steps_used + kWorkPerVote * spent.isms.votes;
     const double reached = bestRootObjective(evaluation);

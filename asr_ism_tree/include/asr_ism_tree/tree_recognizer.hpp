@@ -221,11 +221,13 @@ class TreeRecognizer {
                                   std::vector<asr_ism::IsmRecognitionStats>& ism_stats,
                                   std::vector<EvaluatedIsm>& fitted) const;
   // `with_repeats`: every estimate per object where `estimates_of_object` are the
-  // representatives of repeated detections, nullptr where nothing was merged.
+  // representatives of repeated detections, nullptr where nothing was merged. The exact
+  // searches seek only instances beating `known_best` (one found over other estimates).
   TreeEvaluation evaluateIsms(const std::vector<Pose>& poses,
                               const std::vector<std::vector<int>>& estimates_of_object,
                               const std::vector<std::vector<int>>* with_repeats,
-                              TreeRecognitionStats* stats, ExactSearchBudget& budget) const;
+                              TreeRecognitionStats* stats, ExactSearchBudget& budget,
+                              double known_best = 0.0) const;
   // The exact search (exact_best_search.hpp) from the results in `evaluated`, which are those of
   // a first evaluation over `estimates_of_object` or, `from_lower_bounds`, over a subset of them.
   // Only root results beyond `known_best` (an instance found over other estimates) are sought.
