@@ -49,8 +49,8 @@ class ExactBestSearch {
   using BestObjective = std::function<double(int ism)>;
 
   /// `object_seen`: per object of the tree, whether any estimate may stand for it.
-  /// `known_best`: an objective some instance is known to reach (found over other estimates):
-  /// the root seeks only results beyond it and those of its current results.
+  /// `known_best`: an objective some instance is known to reach (one found over other
+  /// estimates): the root seeks only results beyond it, as it does beyond its own current best.
   ExactBestSearch(const IsmTree& tree, std::vector<bool> object_seen, Evaluate evaluate,
                   BestObjective best, Start start = Start::kFirstEvaluation,
                   double known_best = 0.0);
