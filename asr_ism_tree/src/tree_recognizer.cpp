@@ -777,6 +777,17 @@ std::size_t TreeRecognizer::mergeRepeated(std::vector<std::vector<int>>& estimat
   return left_out;
 }
 
+bool TreeRecognizer::searchesReachTheExhaustiveBest(bool merged) const {
+  // Without merged repeats, every estimate entered; with them, only the search over every repeat
+  // (or fitted repeats at the bound) reaches past the representatives.
+  if (merged &&
+      !(parameters_.exact_best && parameters_.exact_over_repeats && !parameters_.pass_every_result))
+    return false;
+  // A single ISM's first evaluation tries every hypothesis over every input; a tree's sub-ISMs
+  // pass up their few best results only, unless the exact search (or every result) follows.
+  return parameters_.exact_best || parameters_.pass_every_result || tree_.isms.size() == 1;
+}
+
 std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configuration& configuration,
                                                      TreeRecognitionStats* stats) const {
   if (configuration.size() > parameters_.max_estimates) {
@@ -799,6 +810,7 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
   TreeRecognitionStats& counted = stats != nullptr ? *stats : unasked;
   counted = TreeRecognitionStats{};
   std::vector<SceneInstance> instances;
+  bool complete = true;
   ExactSearchBudget budget{
       parameters_.exact_search_max_votes, parameters_.exact_search_max_comparisons,
       parameters_.exact_search_max_total_votes, parameters_.exact_search_max_pose_steps};
@@ -818,6 +830,9 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
     const std::size_t short_before = falling_short();
     const TreeEvaluation evaluation = evaluateIsms(
         poses, estimates_of_object, merged > 0 ? &every_estimate : nullptr, &counted, budget);
+    // The best over all labellings is proven only where that of each labelling is.
+    complete =
+        complete && falling_short() == short_before && searchesReachTheExhaustiveBest(merged > 0);
     RootResults chosen = rootResultsToAssemble(evaluation);
     TreeEvaluation over_fewer_objects;
     if (falling_short() > short_before &&
@@ -839,6 +854,9 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
   counted.exact_search_comparisons = budget.comparisons_used;
   counted.exact_search_votes = budget.votes_used;
   counted.pose_steps = budget.pose_steps_used;
+  counted.search_complete = complete;
+  for (SceneInstance& instance : instances)
+    instance.search_complete = complete;
   // Best first; the root's order (which breaks ties by the model) within one labelling.
   std::stable_sort(instances.begin(), instances.end(), [](const auto& a, const auto& b) {
     return a.confidence > b.confidence + 1e-12;

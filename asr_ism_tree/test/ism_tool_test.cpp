@@ -85,11 +85,12 @@ json parseRecognition(const ToolRun& run, const std::string& scene) {
   EXPECT_TRUE(output["instances"].is_array());
   double previous = 2.0;
   for (const json& instance : output["instances"]) {
-    EXPECT_EQ(keysOf(instance), (Keys{"confidence", "object_confidence", "ids_ignored", "pose",
-                                      "objects", "missing", "isms"}));
+    EXPECT_EQ(keysOf(instance), (Keys{"confidence", "object_confidence", "ids_ignored",
+                                      "search_complete", "pose", "objects", "missing", "isms"}));
     EXPECT_TRUE(instance["confidence"].is_number());
     EXPECT_TRUE(instance["object_confidence"].is_number());
     EXPECT_TRUE(instance["ids_ignored"].is_boolean());
+    EXPECT_TRUE(instance["search_complete"].is_boolean());
     const double confidence = instance["confidence"].get<double>();
     EXPECT_LE(confidence, previous) << "instances are sorted by confidence, best first";
     previous = confidence;
@@ -305,6 +306,9 @@ TEST_F(IsmToolOnRecordings, RecognizeObjectsFilesInYamlAndJson) {
             expected["instances"][0]["object_confidence"]);
   EXPECT_EQ(by_type["instances"][0]["ids_ignored"], true);
   EXPECT_EQ(expected["instances"][0]["ids_ignored"], false);
+  // The searches completed: the confidence is the exhaustive search's, not a lower bound.
+  EXPECT_EQ(expected["instances"][0]["search_complete"], true);
+  EXPECT_EQ(by_type["instances"][0]["search_complete"], true);
 }
 
 TEST_F(IsmToolOnRecordings, ErrorsNameTheInput) {

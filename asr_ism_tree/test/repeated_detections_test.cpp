@@ -311,13 +311,26 @@ TEST_F(RepeatsExactly, BestInstanceIsThatOfTheExhaustiveSearchOverEveryRepeat) {
       for (const auto& [topology, tree] : scene.trees) {
         SCOPED_TRACE(scene.demonstration.scene() + ", " + topology + " tree, case " +
                      std::to_string(trial));
-        TreeRecognitionStats stats;
-        const double merged = bestConfidence(TreeRecognizer(tree).recognize(configuration, &stats));
+        TreeRecognitionStats stats, alone_stats;
+        const auto merged_instances = TreeRecognizer(tree).recognize(configuration, &stats);
+        const double merged = bestConfidence(merged_instances);
         const double all =
             bestConfidence(TreeRecognizer(tree, exhaustive).recognize(configuration));
-        const double alone =
-            bestConfidence(TreeRecognizer(tree, representatives_only).recognize(configuration));
+        const auto alone_instances =
+            TreeRecognizer(tree, representatives_only).recognize(configuration, &alone_stats);
+        const double alone = bestConfidence(alone_instances);
         ++cases;
+        // Whether the best is the exhaustive search's, as every instance says: only where no
+        // search ran out, and never over the representatives alone where repeats were merged.
+        EXPECT_EQ(stats.search_complete, stats.exact_searches_given_up == 0 &&
+                                             stats.repeat_searches_given_up == 0 &&
+                                             stats.pose_gaps_left_open == 0);
+        if (!merged_instances.empty())
+          EXPECT_EQ(merged_instances.front().search_complete, stats.search_complete);
+        if (alone_stats.merged_estimates > 0)
+          EXPECT_FALSE(alone_stats.search_complete);
+        if (!alone_instances.empty() && alone_instances.front().search_complete)
+          EXPECT_NEAR(alone, all, 1e-9);
         most_work = std::max(most_work, stats.exact_search_comparisons);
         EXPECT_LE(merged, all + 1e-9);
         EXPECT_GE(merged, alone - 1e-12);
@@ -438,6 +451,7 @@ TEST_F(ClutterSeries, EverySizeReachesTheBestOfTheRecordedSetAmongIt) {
       ASSERT_FALSE(instances.empty());
       EXPECT_NEAR(instances.front().confidence, 1.0, 1e-9);
       EXPECT_EQ(stats.repeat_searches_given_up + stats.exact_searches_given_up, 0u);
+      EXPECT_TRUE(instances.front().search_complete);
     }
   }
 }
@@ -470,6 +484,10 @@ TEST_F(ClutterSeries, WithoutTheRecordedSetNoRepresentativesBeatTheRepeatsThatFi
   EXPECT_EQ(stats.exact_searches_given_up, 0u);
   EXPECT_EQ(reference_stats.exact_searches_given_up, 0u);
   EXPECT_GT(instances.front().confidence, reference.front().confidence + 1e-9);
+  // The search over every repeat ran out here (no repeat fits exactly, and every combination
+  // of them could still beat the best found): the instance says its confidence may be beaten.
+  EXPECT_GT(stats.repeat_searches_given_up, 0u);
+  EXPECT_FALSE(instances.front().search_complete);
 }
 
 }  // namespace

@@ -98,6 +98,7 @@ TEST_F(SceneRecognizerNodeTest, ServiceRecognisesARecordedConfiguration) {
   EXPECT_TRUE(response.message.empty()) << response.message;
   EXPECT_GE(response.instances[0].object_confidence, 0.99);
   EXPECT_FALSE(response.instances[0].ids_ignored);
+  EXPECT_TRUE(response.instances[0].search_complete);
 }
 
 TEST_F(SceneRecognizerNodeTest, EstimatesWithoutIdsMatchByType) {

@@ -44,6 +44,13 @@ struct SceneInstance {
   /// True if some estimate was matched by type only: it had no id, or one the model does not
   /// know for its type (see TreeRecognizer).
   bool ids_ignored = false;
+  /// True if every search of the recognition that found this instance completed within its work
+  /// limits: then no instance of the scene in those estimates scores higher than the best one
+  /// returned (its confidence is that of the exhaustive search, every estimate entering and
+  /// every sub-ISM passing every result up). False: a search ran out (or was switched off) and
+  /// the best confidence is a lower bound of the exhaustive one (TreeRecognitionStats says
+  /// which search ran out).
+  bool search_complete = false;
   /// The root ISM's reference pose.
   Pose pose;
   /// Scene objects present in the input, in the order of the tree's objects.

@@ -152,6 +152,9 @@ struct TreeRecognitionStats {
   std::size_t object_subsets_better = 0;
   std::size_t object_subset_searches_cut = 0;
   std::size_t object_subset_work = 0;
+  /// Every search completed within its limits for every assignment of id-less estimates, so the
+  /// best instance is the exhaustive search's (SceneInstance::search_complete).
+  bool search_complete = false;
 };
 
 /// Recognises the scene a tree models (the paper's Algo. 2-4). ISMs are evaluated bottom-up, level
@@ -174,14 +177,18 @@ class TreeRecognizer {
   /// Instances sorted by confidence, best first. Estimates match scene objects by type and id; an
   /// estimate without an id, or with an id the scene does not know for its type, may stand for
   /// any object of its type (the best assignment wins, several estimates of one object count
-  /// once, and every instance says `ids_ignored`). Throws InputError for a non-finite pose and
-  /// for more estimates or assignments than the parameters allow.
+  /// once, and every instance says `ids_ignored`). Every instance says `search_complete`: whether
+  /// the best is proven to be the exhaustive search's. Throws InputError for a non-finite pose
+  /// and for more estimates or assignments than the parameters allow.
   std::vector<SceneInstance> recognize(const asr_common::Configuration& configuration,
                                        TreeRecognitionStats* stats = nullptr) const;
 
   const IsmTree& tree() const { return tree_; }
 
  private:
+  // Whether the parameters make the best of one labelling the exhaustive search's wherever no
+  // search runs out (`merged`: repeated detections were merged).
+  bool searchesReachTheExhaustiveBest(bool merged) const;
   struct Leaf {
     int ism;
     int member;

@@ -18,6 +18,7 @@ asr_msgs::SceneInstance toSceneInstanceMessage(const SceneInstance& instance,
   message.confidence = instance.confidence;
   message.object_confidence = instance.object_confidence;
   message.ids_ignored = instance.ids_ignored;
+  message.search_complete = instance.search_complete;
   message.pose = toPoseMessage(instance.pose);
   for (const InstanceObject& object : instance.objects) {
     asr_msgs::ObjectRating& rating = message.objects.emplace_back();
@@ -49,15 +50,16 @@ SceneInstance fromSceneInstanceMessage(const asr_msgs::SceneInstance& message) {
     throw asr_common::InputError("a scene instance without a scene name");
   if (!(message.confidence >= 0.0 && message.confidence <= 1.0))
     throw asr_common::InputError(what + ": confidence " + std::to_string(message.confidence) +
-                              " is not in [0, 1]");
+                                 " is not in [0, 1]");
   if (!(message.object_confidence >= 0.0 && message.object_confidence <= 1.0))
     throw asr_common::InputError(what + ": object confidence " +
-                              std::to_string(message.object_confidence) + " is not in [0, 1]");
+                                 std::to_string(message.object_confidence) + " is not in [0, 1]");
   SceneInstance instance;
   instance.scene = message.scene;
   instance.confidence = message.confidence;
   instance.object_confidence = message.object_confidence;
   instance.ids_ignored = message.ids_ignored;
+  instance.search_complete = message.search_complete;
   instance.pose = fromPoseMessage(message.pose, what);
   for (const asr_msgs::ObjectRating& rating : message.objects) {
     InstanceObject& object = instance.objects.emplace_back();

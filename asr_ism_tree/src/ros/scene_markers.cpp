@@ -40,8 +40,10 @@ void addInstanceSign(const SceneInstance& instance, const std_msgs::Header& head
   text.scale.z = 0.06;
   text.color = rgbaColor(1, 1, 1);
   char label[128];
-  std::snprintf(label, sizeof label, "%s %.2f (objects %.2f)", instance.scene.c_str(),
-                instance.confidence, instance.object_confidence);
+  // ">=": a search ran out, so the exhaustive best may be higher.
+  std::snprintf(label, sizeof label, "%s %s%.2f (objects %.2f)", instance.scene.c_str(),
+                instance.search_complete ? "" : ">=", instance.confidence,
+                instance.object_confidence);
   text.text = label;
   markers.markers.push_back(text);
 }

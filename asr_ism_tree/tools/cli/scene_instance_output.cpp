@@ -19,6 +19,7 @@ nlohmann::ordered_json instanceToJson(const SceneInstance& instance) {
   json["confidence"] = instance.confidence;
   json["object_confidence"] = instance.object_confidence;
   json["ids_ignored"] = instance.ids_ignored;
+  json["search_complete"] = instance.search_complete;
   json["pose"] = poseToJson(instance.pose);
   json["objects"] = nlohmann::ordered_json::array();
   for (const InstanceObject& object : instance.objects) {
@@ -46,9 +47,12 @@ void printInstances(std::ostream& out, const std::vector<SceneInstance>& instanc
     const auto& p = instance.pose.position;
     std::snprintf(
         line, sizeof(line),
-        "instance %zu: confidence %.3f, object confidence %.3f, at (%.3f, %.3f, %.3f)%s\n", i + 1,
+        "instance %zu: confidence %.3f, object confidence %.3f, at (%.3f, %.3f, %.3f)%s%s\n", i + 1,
         instance.confidence, instance.object_confidence, p.x(), p.y(), p.z(),
-        instance.ids_ignored ? ", ids ignored (matched by type)" : "");
+        instance.ids_ignored ? ", ids ignored (matched by type)" : "",
+        i == 0 && !instance.search_complete
+            ? ", a search ran out of its work limits (the best may be higher)"
+            : "");
     out << line;
     for (const InstanceObject& object : instance.objects) {
       std::snprintf(
