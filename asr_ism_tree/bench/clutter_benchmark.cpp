@@ -69,8 +69,7 @@ std::vector<ClutterRow> benchmarkSeries(const std::string& recordings,
         TreeRecognitionStats stats;
         row.milliseconds = millisecondsOf(recognizer, input, instances, &stats);
         row.merged = stats.merged_estimates;
-        row.repeat_search_given_up =
-            stats.repeat_searches_given_up + stats.exact_searches_given_up > 0;
+        row.search_complete = !instances.empty() && instances.front().search_complete;
         for (int again = 1; again < 3 && row.milliseconds < 2000.0; ++again)
           row.milliseconds =
               std::min(row.milliseconds, millisecondsOf(recognizer, input, instances));
@@ -110,15 +109,17 @@ std::vector<ClutterRow> benchmarkJitteredClutter(const std::string& recordings,
 
 void printJitteredClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
   out << "Clutter without its recorded set: every copy of gedeck set " << kClutterRecordedSet
-      << " jittered\n(no repeat fits exactly; *: a search ran out of its work limits, the best "
-         "found before it\n stands; docs/recognition.md compares these with the code of "
+      << " jittered\n(no repeat fits exactly; *: search_complete false, a search ran out of its "
+         "work "
+         "limits,\n the best found before it stands; docs/recognition.md compares these with the "
+         "code of "
          "2026-11-23)\n";
   out << "topology  estimates     kept        ms  instances  best confidence\n";
   char line[200];
   for (const ClutterRow& row : rows) {
     std::snprintf(line, sizeof line, "%-8s  %9zu  %7zu  %8.1f  %9zu  %15.4f%s\n",
                   row.topology.c_str(), row.estimates, row.estimates - row.merged, row.milliseconds,
-                  row.instances, row.best_confidence, row.repeat_search_given_up ? "*" : "");
+                  row.instances, row.best_confidence, row.search_complete ? "" : "*");
     out << line;
   }
 }
@@ -140,8 +141,8 @@ std::string comparedWithExhaustive(const ClutterRow& row) {
 void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
   out << "Clutter: gedeck set " << kClutterRecordedSet
       << " repeated with 2 cm / 3 deg jitter (all estimates of the scene's types)\n";
-  out << "(repeated detections merged; *: a search ran out of its work "
-         "limits,\n"
+  out << "(repeated detections merged; *: search_complete false, a search ran out of its "
+         "work limits,\n"
       << " the best found before it stands; exhaustive: every repeat enters the search, as before\n"
       << " they were merged, up to " << exhaustiveUpTo("star") << " (star) and "
       << exhaustiveUpTo("complete") << " (complete) estimates; vs exhaustive: the\n"
@@ -154,7 +155,7 @@ void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
       std::snprintf(line, sizeof line, "%-8s  %9zu  %7zu  %8.1f  %9zu  %15.3f",
                     row.topology.c_str(), row.estimates, row.estimates - row.merged,
                     row.milliseconds, row.instances, row.best_confidence);
-      out << line << (row.repeat_search_given_up ? "*" : " ");
+      out << line << (row.search_complete ? " " : "*");
       if (row.exhaustive_best_confidence >= 0.0) {
         std::snprintf(line, sizeof line, " %15.3f  %13.1f  %s", row.exhaustive_best_confidence,
                       row.exhaustive_milliseconds, comparedWithExhaustive(row).c_str());

@@ -19,9 +19,9 @@ struct ClutterRow {
   double best_confidence = 0.0;
   std::size_t instances = 0;
   std::size_t merged = 0;  // repeated detections merged away
-  // A search (over every repeat, or the first) ran out of its work limits: the best found
-  // before it stands.
-  bool repeat_search_given_up = false;
+  // The best instance's SceneInstance::search_complete: false where a search ran out of its
+  // work limits, so the best found before it stands (a lower bound of the exhaustive best).
+  bool search_complete = false;
   bool run = false;  // false: skipped, a smaller size of this topology took too long
   // The best confidence of the exhaustive search (every repeated detection enters: recognition
   // as it was before they were merged, seconds of work; exhaustiveClutterParameters()), and its
@@ -51,7 +51,7 @@ std::string comparedWithExhaustive(const ClutterRow& row);
 void printClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows);
 
 /// The series without its recorded set (every copy jittered, sizes as above): no repeat fits
-/// exactly, so the searches may give up (`repeat_search_given_up`), and the exhaustive best is
+/// exactly, so the searches may give up (`search_complete` false), and the exhaustive best is
 /// not known (not measured).
 std::vector<ClutterRow> benchmarkJitteredClutter(const std::string& recordings,
                                                  const BenchmarkSettings& settings,
