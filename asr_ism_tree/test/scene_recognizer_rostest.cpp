@@ -23,6 +23,8 @@
 #include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
 #include "asr_ism/sqlite/demonstration_writer.hpp"
+#include "asr_ism_tree/ros/scene_instance_message.hpp"
+#include "asr_ism_tree/ros/scene_markers.hpp"
 #include "asr_ism_tree/sqlite/model_store.hpp"
 #include "asr_ism_tree/tree_generation.hpp"
 #include "asr_ism_tree/tree_recognizer.hpp"
@@ -302,6 +304,37 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
   EXPECT_EQ(bad.process().waitForExit(std::chrono::minutes(1)), 0);
   EXPECT_NE(asr_common::testing::fileBytes(log).find("missing.sqlite"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir.file("bad.sqlite")));
+}
+
+// The text marker's label of an instance, from the markers of it alone.
+std::string labelOf(const SceneInstance& instance) {
+  std_msgs::Header header;
+  header.frame_id = "map";
+  const auto markers = ros_interface::sceneInstanceMarkers({instance}, SceneModels(), header);
+  for (const auto& marker : markers.markers) {
+    if (marker.type == visualization_msgs::Marker::TEXT_VIEW_FACING)
+      return marker.text;
+  }
+  return "";
+}
+
+TEST(SceneInstanceOutput, SaysWhereTheConfidenceIsOnlyALowerBound) {
+  // Where a search ran out, the rviz label marks the confidence as a lower bound, and the
+  // message carries search_complete both ways.
+  SceneInstance instance;
+  instance.scene = "gedeck";
+  instance.confidence = 0.97;
+  instance.object_confidence = 0.88;
+  std_msgs::Header header;
+  header.frame_id = "map";
+  for (const bool complete : {true, false}) {
+    instance.search_complete = complete;
+    EXPECT_EQ(labelOf(instance),
+              complete ? "gedeck 0.97 (objects 0.88)" : "gedeck >=0.97 (objects 0.88)");
+    const asr_msgs::SceneInstance message = ros_interface::toSceneInstanceMessage(instance, header);
+    EXPECT_EQ(static_cast<bool>(message.search_complete), complete);
+    EXPECT_EQ(ros_interface::fromSceneInstanceMessage(message).search_complete, complete);
+  }
 }
 
 }  // namespace
