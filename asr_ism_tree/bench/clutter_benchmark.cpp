@@ -110,10 +110,8 @@ std::vector<ClutterRow> benchmarkJitteredClutter(const std::string& recordings,
 void printJitteredClutterTable(std::ostream& out, const std::vector<ClutterRow>& rows) {
   out << "Clutter without its recorded set: every copy of gedeck set " << kClutterRecordedSet
       << " jittered\n(no repeat fits exactly; *: search_complete false, a search ran out of its "
-         "work "
-         "limits,\n the best found before it stands; docs/recognition.md compares these with the "
-         "code of "
-         "2026-11-23)\n";
+         "work limits,\n the best found before it stands; docs/recognition.md compares these "
+         "with the code of 2026-11-23)\n";
   out << "topology  estimates     kept        ms  instances  best confidence\n";
   char line[200];
   for (const ClutterRow& row : rows) {
