@@ -71,6 +71,14 @@ struct Votes {
   }
 };
 
+// The objective a hypothesis of a bin must reach to be selected: `any` for every hypothesis,
+// `full` (never below `any`) for one with the bin's full assignment, which a result found before
+// may already hold at a higher objective (Bar::forBin).
+struct Thresholds {
+  double any = kNoThreshold;
+  double full = kNoThreshold;
+};
+
 // One evaluated reference hypothesis: a vote taken as the reference pose and the best vote of each
 // member around it.
 struct Hypothesis {
@@ -82,6 +90,31 @@ struct Hypothesis {
   std::vector<int> assignment;  // per member, the matched input or -1
   // Matches every input around it fully, one per member: nothing else can explain them better.
   bool perfect = false;
+};
+
+// An axis-aligned box of vote positions.
+struct Box {
+  double min_x, min_y, min_z, max_x, max_y, max_z;
+
+  static Box around(double x, double y, double z) { return {x, y, z, x, y, z}; }
+
+  void extendTo(double x, double y, double z) {
+    min_x = std::min(min_x, x);
+    min_y = std::min(min_y, y);
+    min_z = std::min(min_z, z);
+    max_x = std::max(max_x, x);
+    max_y = std::max(max_y, y);
+    max_z = std::max(max_z, z);
+  }
+
+  // The squared distance from (x, y, z) to the box; never more than to any point in it, also
+  // in floating point (each difference is one of a point's, or 0).
+  double squaredDistanceFrom(double x, double y, double z) const {
+    const double dx = std::max({0.0, min_x - x, x - max_x});
+    const double dy = std::max({0.0, min_y - y, y - max_y});
+    const double dz = std::max({0.0, min_z - z, z - max_z});
+    return dx * dx + dy * dy + dz * dz;
+  }
 };
 
 // The neighbourhood of one bin, regrouped by member so a hypothesis can be abandoned as soon as
@@ -96,12 +129,21 @@ struct Neighbourhood {
   // of entry i of `members` from first_run[i] to first_run[i + 1].
   std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
   std::vector<std::uint32_t> first_run;
+  // Per run, the box its votes span: a run farther from a hypothesis than a vote may be is
+  // skipped without a look at its votes.
+  std::vector<Box> run_box;
   std::vector<std::uint32_t> candidates;  // the bin's own votes, in key order
   double upper_bound = 0.0;
   std::vector<int> atoms;  // sorted estimates that inputs with votes here stand for
   // Every member here votes from a single input, so a hypothesis that matches all of them fully
   // uses every estimate here, and anything else in the bin would only repeat part of it.
   bool one_input_per_member = false;
+  // With one input per member: per member of the ISM, that input or -1; the assignment of every
+  // hypothesis here that matches each member here. Empty otherwise.
+  std::vector<int> full_assignment;
+  // lightest_from[i]: the smallest max_weight of entries i.. of `members` (infinity past the
+  // last); a hypothesis that leaves one of them unmatched loses at least that much of its bound.
+  std::vector<double> lightest_from;
   // Some hypothesis here may be perfect: one input per member, and a candidate with a vote of
   // every member on it (CoincidentVotes).
   bool may_hold_perfect = false;
@@ -238,12 +280,14 @@ class Search {
         cos_half_max_angle_(std::cos(0.5 * parameters.max_angle_deviation)),
         sin_half_squared_max_angle_(sinHalfSquared(cos_half_max_angle_)) {
     vote_.resize(member_count_);
+    seed_similarity_.resize(member_count_);
     last_best_vote_.assign(member_count_, -1);
     best_.resize(member_count_);
     per_member_.resize(member_count_);
     slot_.resize(member_count_);
     rank_.resize(member_count_);
     input_stamp_.assign(atoms_of_input.size(), 0);
+    input_member_.assign(atoms_of_input.size(), -1);
     position_.resize(member_count_);
     orientation_.resize(member_count_);
     x_order_.resize(votes.px.size());
@@ -293,6 +337,7 @@ class Search {
         const int input = votes_.input[v];
         if (input_stamp_[input] != stamp_) {
           input_stamp_[input] = stamp_;
+          input_member_[input] = m;
           inputs_here_.push_back(input);
         }
       }
@@ -300,6 +345,15 @@ class Search {
     splitIntoRuns(space, n);
     n.atoms = unionOfAtoms(inputs_here_, atoms_of_input_);
     n.one_input_per_member = inputs_here_.size() == n.members.size();
+    n.full_assignment.clear();
+    if (n.one_input_per_member) {
+      n.full_assignment.assign(member_count_, -1);
+      for (int input : inputs_here_)
+        n.full_assignment[input_member_[input]] = input;
+    }
+    n.lightest_from.assign(n.members.size() + 1, std::numeric_limits<double>::infinity());
+    for (std::size_t i = n.members.size(); i-- > 0;)
+      n.lightest_from[i] = std::min(n.max_weight[i], n.lightest_from[i + 1]);
     // Sum in member order, as evaluate() does, so a perfect hypothesis meets the bound exactly.
     n.upper_bound = 0.0;
     for (double w : n.max_weight)
@@ -331,9 +385,17 @@ class Search {
   template <typename BarNow, typename Emit>
   void searchBin(const Neighbourhood& n, double every_from, BarNow bar_now, Emit emit) {
     const bool every_here_wanted = n.upper_bound >= every_from - kBoundMargin;
-    double threshold = bar_now();
+    // The reference (compare_every_vote) skips nothing for the full assignment's best either.
+    const auto thresholds_now = [&] {
+      Thresholds now = bar_now();
+      if (compare_every_vote_)
+        now.full = now.any;
+      return now;
+    };
+    Thresholds threshold = thresholds_now();
     for (std::uint32_t c : n.candidates) {
-      if (fallsShort(n.upper_bound, threshold))
+      if (fallsShort(n.upper_bound, threshold.any) ||
+          cannotBeSelected(n.upper_bound, n.lightest_from[0], threshold))
         return;  // nothing in this bin can be selected any more
       ++stats_.candidates;
       double objective;
@@ -363,7 +425,7 @@ class Search {
       emit(std::move(hypothesis));
       if (perfect && !every_here_wanted)
         return;
-      threshold = bar_now();
+      threshold = thresholds_now();
     }
   }
 
@@ -376,31 +438,57 @@ class Search {
                   bin_of_vote_.begin() + space.bins()[b].end, b);
     }
     n.runs.clear();
+    n.run_box.clear();
     n.first_run.clear();
     for (std::size_t i = 0; i < n.members.size(); ++i) {
       n.first_run.push_back(static_cast<std::uint32_t>(n.runs.size()));
       for (std::uint32_t k = n.begin[i]; k < n.end[i]; ++k) {
-        if (k == n.begin[i] || bin_of_vote_[n.votes[k]] != bin_of_vote_[n.votes[k - 1]])
+        const std::uint32_t v = n.votes[k];
+        if (k == n.begin[i] || bin_of_vote_[v] != bin_of_vote_[n.votes[k - 1]]) {
           n.runs.emplace_back(k, k);
+          n.run_box.push_back(Box::around(votes_.px[v], votes_.py[v], votes_.pz[v]));
+        }
         n.runs.back().second = k + 1;
+        n.run_box.back().extendTo(votes_.px[v], votes_.py[v], votes_.pz[v]);
       }
     }
     n.first_run.push_back(static_cast<std::uint32_t>(n.runs.size()));
   }
 
-  // Scores hypothesis `c`; false once the members left cannot lift it to `threshold`.
-  bool evaluate(std::uint32_t c, const Neighbourhood& n, double threshold, double& objective) {
+  // Whether a hypothesis bounded by `bound`, all of whose members matched so far, can reach
+  // neither `full` (matching every member left) nor `any` (leaving one of them, the lightest at
+  // best, unmatched: it then loses at least `lightest_left`).
+  static bool cannotBeSelected(double bound, double lightest_left, const Thresholds& threshold) {
+    return fallsShort(bound, threshold.full) && fallsShort(bound - lightest_left, threshold.any);
+  }
+
+  // Scores hypothesis `c`; false once the members left cannot lift it to what it must reach.
+  bool evaluate(std::uint32_t c, const Neighbourhood& n, const Thresholds& threshold,
+                double& objective) {
     std::fill(vote_.begin(), vote_.end(), -1);
+    // Where every member has a vote scoring above 0 here, the hypothesis will match each, so it
+    // has the full assignment and must beat that assignment's best.
+    const bool seeded = threshold.full > threshold.any;
+    const double must_reach =
+        seeded && seedsMatchEveryMember(c, n) ? threshold.full : threshold.any;
     double achieved = 0.0;
     double still_possible = n.upper_bound;
+    bool all_matched = true;
     for (std::size_t i = 0; i < n.members.size(); ++i) {
       const int m = n.members[i];
       stats_.neighbourhood_votes += n.end[i] - n.begin[i];
-      if (compare_every_vote_ || !bestVoteAmongLikely(c, n, i))
+      // What member i must add for the hypothesis to reach must_reach, less a margin that makes
+      // the bound below fall short wherever the member's best similarity is below it.
+      const double need =
+          must_reach - 3.0 * kBoundMargin - (achieved + still_possible - n.max_weight[i]);
+      if (compare_every_vote_ || !bestVoteAmongLikely(c, n, i, seeded, need))
         bestVote(c, n, i, 0.0, std::numeric_limits<double>::infinity());
       achieved += best_[m];
       still_possible -= n.max_weight[i];
-      if (fallsShort(achieved + still_possible, threshold))
+      all_matched = all_matched && vote_[m] >= 0;
+      const double bound = achieved + still_possible;
+      if (fallsShort(bound, must_reach) ||
+          (all_matched && cannotBeSelected(bound, n.lightest_from[i + 1], threshold)))
         return false;
     }
     objective = achieved;
@@ -412,15 +500,34 @@ class Search {
   // the member's largest weight here, and the best similarity is at least that of the member's
   // best vote for the previous hypothesis, usually a neighbour of this one. False where that
   // cannot be shown to give the result of comparing every vote (see bestVote).
-  bool bestVoteAmongLikely(std::uint32_t c, const Neighbourhood& n, std::size_t i) {
-    const int m = n.members[i];
+  // `seeded`: seed_similarity_[i] holds it already (seedsMatchEveryMember). Votes that cannot
+  // reach `need` are skipped too: where the best does, it is found as before; where it does not,
+  // the hypothesis falls short whatever this member adds, so its best need not be exact.
+  bool bestVoteAmongLikely(std::uint32_t c, const Neighbourhood& n, std::size_t i, bool seeded,
+                           double need) {
+    const double seed_similarity = seeded ? seed_similarity_[i] : seedSimilarity(c, n.members[i]);
+    return bestVote(c, n, i, std::max({0.0, seed_similarity, need}), kLikelyMargin);
+  }
+
+  // The similarity to hypothesis c of member m's last best vote (-1 where it has none or that
+  // vote fails the support test).
+  double seedSimilarity(std::uint32_t c, int m) {
     const int seed = last_best_vote_[m];
-    double seed_similarity = 0.0;
-    if (seed >= 0) {
-      ++stats_.comparisons;
-      seed_similarity = similarityOf(static_cast<std::uint32_t>(seed), c);
+    if (seed < 0)
+      return -1.0;
+    ++stats_.comparisons;
+    return similarityOf(static_cast<std::uint32_t>(seed), c);
+  }
+
+  // Fills seed_similarity_ for the members here; whether each seed scores above 0. A vote within
+  // the support radius of c lies in c's neighbourhood, so the member is then matched here.
+  bool seedsMatchEveryMember(std::uint32_t c, const Neighbourhood& n) {
+    bool every = true;
+    for (std::size_t i = 0; i < n.members.size(); ++i) {
+      seed_similarity_[i] = seedSimilarity(c, n.members[i]);
+      every = every && seed_similarity_[i] > 0.0;
     }
-    return bestVote(c, n, i, seed_similarity, kLikelyMargin);
+    return every;
   }
 
   // Compares hypothesis c with member i's votes in order, keeping the best (ties by key, as
@@ -453,6 +560,8 @@ class Search {
     double skip_beyond_squared = skipBeyond(best);
     // A run's votes are sorted by x: only those within the skip distance in x are looked at.
     for (std::uint32_t run = n.first_run[i]; run < n.first_run[i + 1]; ++run) {
+      if (n.run_box[run].squaredDistanceFrom(cx, cy, cz) >= skip_beyond_squared)
+        continue;  // every vote of it would be skipped below
       // Runs are sorted by x at VotingSpace::xOrder's resolution: one step more either side.
       const double reach = std::sqrt(skip_beyond_squared) * (1.0 + 1e-9);
       const std::int64_t lowest = VotingSpace::xOrder(cx - reach, bin_size_) - 1;
@@ -558,7 +667,8 @@ class Search {
   const double support_radius_squared_;
   const double cos_half_max_angle_;
   const double sin_half_squared_max_angle_;
-  std::vector<int> vote_;  // per member, the matched vote or -1
+  std::vector<int> vote_;                // per member, the matched vote or -1
+  std::vector<double> seed_similarity_;  // per entry of a neighbourhood's members
   std::vector<double> best_;
   std::vector<int> last_best_vote_;  // per member, its last matched vote or -1
   std::vector<std::uint32_t> bin_of_vote_;
@@ -566,6 +676,7 @@ class Search {
   std::vector<std::uint32_t> slot_;
   std::vector<int> rank_;
   std::vector<std::uint32_t> input_stamp_;
+  std::vector<int> input_member_;  // per input seen in a neighbourhood, its member
   std::uint32_t stamp_ = 0;
   std::vector<int> inputs_here_;
   std::vector<double> position_;
@@ -601,9 +712,19 @@ class Bar {
 
   bool dropsSubsets() const { return best_count_ == 0; }
 
-  // The objective a result of a bin with this neighbourhood must reach to be selected.
-  double forBin(const Neighbourhood& n) const {
-    return std::max(std::min(bestOrDominatorBar(n), every_result_from_), at_least_);
+  // The objective a result of a bin with this neighbourhood must reach to be selected. One with
+  // the bin's full assignment must also beat the best found with it: below that it is neither
+  // the assignment's best nor (short of every_result_from) wanted for its pose.
+  Thresholds forBin(const Neighbourhood& n) const {
+    Thresholds threshold;
+    threshold.any = std::max(std::min(bestOrDominatorBar(n), every_result_from_), at_least_);
+    threshold.full = threshold.any;
+    if (!n.full_assignment.empty()) {
+      const auto found = best_of_assignment_.find(n.full_assignment);
+      if (found != best_of_assignment_.end())
+        threshold.full = std::max(threshold.any, std::min(found->second, every_result_from_));
+    }
+    return threshold;
   }
 
   // The highest objective a perfect result of the bins not yet searched could have: the upper
@@ -611,6 +732,9 @@ class Bar {
   void setPerfectBound(double bound) { perfect_bound_ = bound; }
 
   void add(const Hypothesis& result) {
+    const auto [entry, inserted] = best_of_assignment_.emplace(result.assignment, result.objective);
+    if (!inserted)
+      entry->second = std::max(entry->second, result.objective);
     std::vector<int> atoms = unionOfAtoms(result.assignment, atoms_of_input_);
     if (dominated(result.objective, atoms))
       return;  // a better result rules out everything this one would
@@ -687,6 +811,7 @@ class Bar {
   const double at_least_;
   std::vector<std::pair<double, std::vector<int>>> dominators_;
   std::vector<BestEntry> best_;
+  std::unordered_map<std::vector<int>, double, AssignmentHash> best_of_assignment_;
   double perfect_bound_ = std::numeric_limits<double>::infinity();
 };
 

@@ -460,6 +460,18 @@ std::vector<IsmInput> randomCrowdedInputs(PortableRandom& random, const Ism& ism
   return inputs;
 }
 
+// Inputs around one scene, each member once with noise: no result matches fully, and every
+// hypothesis that matches each member has the same assignment, so most are beaten by one found
+// before.
+std::vector<IsmInput> randomSparseInputs(PortableRandom& random, const Ism& ism) {
+  const Pose scene(Eigen::Vector3d(random.uniform(-2, 2), random.uniform(-2, 2), 0.8),
+                   randomTurn(random, M_PI));
+  std::vector<IsmInput> inputs;
+  for (int m = 0; m < static_cast<int>(ism.members.size()); ++m)
+    inputs.push_back({m, jittered(random, memberPose(ism, m, scene), 0.02, 6 * kDegree), 1.0, {}});
+  return inputs;
+}
+
 // The same results, with their poses moved by `motion` (identity: bit for bit, tolerance 0).
 void expectSameResults(const std::vector<IsmResult>& expected, const std::vector<IsmResult>& got,
                        const std::string& where, const Pose& motion = Pose::identity(),
@@ -487,19 +499,24 @@ void expectSameResults(const std::vector<IsmResult>& expected, const std::vector
 }
 
 // The search compares a member's votes only where their distance lets them come near the best
-// one; comparing every vote near each hypothesis must give the same results bit for bit (same
-// instances, objectives, matched votes and order), for every kind of selection.
-TEST(IsmRecognizer, SkippingVotesThatCannotMatterChangesNoResult) {
+// one, and stops scoring a hypothesis that will match the same inputs as a better result found
+// before; comparing every vote near each hypothesis and scoring every hypothesis above the bar
+// must give the same results bit for bit (same instances, objectives, matched votes and order),
+// for every kind of selection, with crowded inputs and with one input per member.
+TEST(IsmRecognizer, SkippingVotesAndHypothesesThatCannotMatterChangesNoResult) {
   IsmResultSelection root, sub_ism, every, above;
   sub_ism.best_count = 4;
   every.best_count = 4;
   every.every_result_from = 1.0;
   above.at_least = 1.5;
   std::size_t compared = 0, compared_every = 0;
-  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+  std::size_t sparse_votes = 0, sparse_votes_every = 0;  // sub-ISM selections, sparse inputs
+  for (std::uint32_t seed = 1; seed <= 120; ++seed) {
     PortableRandom random(seed);
     const Ism ism = randomDemonstratedIsm(random);
-    const std::vector<IsmInput> inputs = randomCrowdedInputs(random, ism);
+    const bool sparse = seed > 60;
+    const std::vector<IsmInput> inputs =
+        sparse ? randomSparseInputs(random, ism) : randomCrowdedInputs(random, ism);
     for (const IsmResultSelection& selection : {root, sub_ism, every, above}) {
       IsmResultSelection reference = selection;
       reference.compare_every_vote = true;
@@ -507,17 +524,25 @@ TEST(IsmRecognizer, SkippingVotesThatCannotMatterChangesNoResult) {
       const auto expected = recognizeIsm(ism, inputs, {}, reference, &reference_stats);
       const auto got = recognizeIsm(ism, inputs, {}, selection, &stats);
       expectSameResults(expected, got, "seed " + std::to_string(seed));
-      EXPECT_EQ(stats.candidates, reference_stats.candidates);
-      EXPECT_EQ(stats.neighbourhood_votes, reference_stats.neighbourhood_votes);
-      EXPECT_LE(stats.comparisons, reference_stats.comparisons);
+      EXPECT_LE(stats.candidates, reference_stats.candidates);
+      EXPECT_LE(stats.neighbourhood_votes, reference_stats.neighbourhood_votes);
+      // (With few votes, the seeds compared to see whether every member will match can cost
+      // more than they save, so comparisons are compared in sum only.)
       compared += stats.comparisons;
       compared_every += reference_stats.comparisons;
+      if (sparse && selection.best_count > 0) {
+        sparse_votes += stats.neighbourhood_votes;
+        sparse_votes_every += reference_stats.neighbourhood_votes;
+      }
     }
   }
-  // The point of it: far fewer comparisons where votes crowd.
+  // The point of it: far fewer comparisons where votes crowd, and where each member is seen
+  // once, fewer hypotheses of sub-ISMs scored in full.
   EXPECT_LT(compared, compared_every / 2);
+  EXPECT_LT(sparse_votes, sparse_votes_every);
   std::cout << "comparisons: " << compared << " against " << compared_every
-            << " comparing every vote\n";
+            << " comparing every vote; sub-ISMs over one input per member: " << sparse_votes
+            << " neighbourhood votes against " << sparse_votes_every << "\n";
 }
 
 // A rigid motion of up to `max_shift` metres: a random turn about a random axis, or (one case in

@@ -221,7 +221,7 @@ TEST_F(RepeatedDetectionsInATree, WorkDoesNotGrowWithRepeats) {
   // it stands: the merged one or, higher, that of the repeats that fit it best.
   TreeRecognitionParameters merged_only, limited;
   merged_only.exact_over_repeats = false;
-  limited.exact_search_max_comparisons = 20000;
+  limited.exact_search_max_comparisons = 5000;
   // Every detection jittered (the first copy is the recorded set), so the merged best falls
   // short of the bound and the search over every repeat runs.
   Configuration fifty_jittered = jittered(51, 3);

@@ -80,7 +80,9 @@ struct IsmResultSelection {
   /// outcome does not depend on the machine.
   std::size_t max_comparisons = std::numeric_limits<std::size_t>::max();
   /// Compare every vote near each hypothesis instead of only those whose distance lets them
-  /// come near the best: the same results, more comparisons. The tests' reference.
+  /// come near the best, and score in full every hypothesis that reaches the bar, even one that
+  /// will match the same inputs as a better result found before (so can only be dropped): the
+  /// same results, more work. The tests' reference.
   bool compare_every_vote = false;
 };
 
@@ -116,10 +118,12 @@ struct IsmRecognitionStats {
 /// the hypothesis cast by the lower member (the reference first), then the lower input and
 /// relative pose, so that where the bin grid falls does not change which hypothesis wins. Bins
 /// are searched in order of their objective's upper bound, and bins and hypotheses whose bound
-/// shows they cannot be selected are skipped. The bin grid is laid in a frame taken from one of
-/// the inputs (ism_recognizer.cpp, SearchFrame), so a rigid motion of all inputs moves the grid
-/// with them: the results move with the inputs, and every work count (IsmRecognitionStats, and
-/// so whether `max_comparisons` is exceeded) stays the same. Deterministic.
+/// shows they cannot be selected are skipped (below the bar, or, where a hypothesis will match
+/// every member around it, below the best result found with those inputs). The bin grid is laid in
+/// a frame taken from one of the inputs (ism_recognizer.cpp, SearchFrame), so a rigid motion of all
+/// inputs moves the grid with them: the results move with the inputs, and every work count
+/// (IsmRecognitionStats, and so whether `max_comparisons` is exceeded) stays the same.
+/// Deterministic.
 std::vector<IsmResult> recognizeIsm(const Ism& ism, const std::vector<IsmInput>& inputs,
                                     const IsmRecognitionParameters& parameters,
                                     const IsmResultSelection& selection = {},
