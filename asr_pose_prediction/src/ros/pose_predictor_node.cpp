@@ -38,7 +38,8 @@ PosePredictorNode::PosePredictorNode(ros::NodeHandle node, ros::NodeHandle priva
   subscriber_ = node_.subscribe("scene_instances", kResultQueue, &PosePredictorNode::receive, this);
   service_ = node_.advertiseService("predict_poses", &PosePredictorNode::predictService, this);
   continuous_ = continuous;
-  ROS_INFO("pose_predictor: %zu scenes, %d poses per missing object", predictors_.size(), samples);
+  ROS_INFO("pose_predictor: %zu scenes, %lld poses per missing object", predictors_.size(),
+           samples);
 }
 
 std::vector<asr_msgs::PredictedPoseCloud> PosePredictorNode::predict(
