@@ -244,6 +244,47 @@ TEST_F(SceneRecognizerNodeTest, ReloadSwapsModelsAndKeepsTheOldOnFailure) {
     EXPECT_NE(instance.scene, "Brot_Regal");
 }
 
+// The searches' work limits are node parameters: a second node with low ones answers a badly
+// seen configuration with a lower best (its searches give up sooner) where the default node's
+// searches find a better one; a negative limit stops the node with a message.
+TEST_F(SceneRecognizerNodeTest, WorkLimitsAreParametersThatBoundTheSearch) {
+  asr_common::Configuration turned = demonstration_.configuration(3);
+  asr_common::Pose& pose = turned[4].pose;
+  pose.orientation =
+      (pose.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitZ())))
+          .normalized();
+  pose.position.x() += 0.03;
+  const std::string model_files = "_model_files:=" + model_;
+  ChildProcess light(std::string(ASR_NODE_DIR) + "/scene_recognizer",
+                     {"__name:=light_recognizer", "__ns:=light", model_files, "_continuous:=false",
+                      "_exact_search_max_comparisons:=1000", "_diverse_max_comparisons:=1000",
+                      "_object_subsets_max_work:=0"},
+                     dir_.file("light.out"), dir_.file("light.err"));
+  ros::ServiceClient light_client =
+      handle_.serviceClient<asr_msgs::RecognizeScenes>("/light/recognize_scenes");
+  ASSERT_TRUE(light_client.waitForExistence(ros::Duration(30)))
+      << "the light node did not start: " << asr_common::testing::fileBytes(dir_.file("light.err"));
+  asr_msgs::RecognizeScenes service;
+  for (const asr_common::ObjectEstimate& estimate : turned)
+    service.request.objects.push_back(estimateMessage(estimate));
+  ASSERT_TRUE(light_client.call(service));
+  const asr_msgs::RecognizeScenes::Response by_default = ask(turned);
+  ASSERT_FALSE(service.response.instances.empty());
+  ASSERT_FALSE(by_default.instances.empty());
+  EXPECT_LT(service.response.instances.front().confidence,
+            by_default.instances.front().confidence - 0.005);
+  EXPECT_FALSE(service.response.instances.front().search_complete);
+
+  ChildProcess negative(std::string(ASR_NODE_DIR) + "/scene_recognizer",
+                        {"__name:=negative_recognizer", "__ns:=negative", model_files,
+                         "_continuous:=false", "_object_subsets_max_work:=-1"},
+                        dir_.file("negative.out"), dir_.file("negative.err"));
+  EXPECT_NE(negative.waitForExit(std::chrono::seconds(30)), 0);
+  const std::string said = asr_common::testing::fileBytes(dir_.file("negative.err")) +
+                           asr_common::testing::fileBytes(dir_.file("negative.out"));
+  EXPECT_NE(said.find("object_subsets_max_work"), std::string::npos) << said;
+}
+
 TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
   REQUIRE_RECORDINGS();
   TempDir dir("asr_trainer_rostest");

@@ -33,6 +33,7 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
   // Requests with more estimates are refused with a message.
   recognition_parameters_.max_estimates =
       static_cast<std::size_t>(integerParameter(private_node_, "max_estimates", 1000, 1, 1000000));
+  readWorkLimits();
   models_ = std::make_shared<const SceneModels>(
       SceneModels::load(model_files_, scenes_, recognition_parameters_));
 
@@ -55,6 +56,21 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
     loaded += (loaded.empty() ? "" : ", ") + scene;
   ROS_INFO("scene_recognizer: %zu scenes loaded (%s), %s", models_->scenes().size(), loaded.c_str(),
            continuous ? "continuous mode" : "service only");
+}
+
+// The library's work limits of the searches that make the best exact (TreeRecognitionParameters;
+// its defaults where not set). Lower ones shorten a recognition where scenes are seen badly or
+// not at all (a tick of ten kitchen scenes: 2 s with the defaults), at the price of bests that
+// are more often lower bounds (search_complete false); 0 gives each search up at once.
+void SceneRecognizerNode::readWorkLimits() {
+  constexpr long long kMaxWork = 1000000000000LL;
+  const auto read = [&](const char* name, std::size_t& limit) {
+    limit = static_cast<std::size_t>(
+        integerParameter(private_node_, name, static_cast<long long>(limit), 0, kMaxWork));
+  };
+  read("exact_search_max_comparisons", recognition_parameters_.exact_search_max_comparisons);
+  read("diverse_max_comparisons", recognition_parameters_.diverse_max_comparisons);
+  read("object_subsets_max_work", recognition_parameters_.object_subsets_max_work);
 }
 
 bool SceneRecognizerNode::recognize(asr_msgs::RecognizeScenes::Request& request,

@@ -33,6 +33,7 @@ class SceneRecognizerNode {
   explicit SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle private_node);
 
  private:
+  void readWorkLimits();
   bool recognize(asr_msgs::RecognizeScenes::Request& request,
                  asr_msgs::RecognizeScenes::Response& response);
   bool reload(asr_msgs::ReloadModel::Request& request, asr_msgs::ReloadModel::Response& response);
