@@ -9,6 +9,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include <Eigen/Geometry>
+
 #include "asr_ism/coincident_poses.hpp"
 #include "asr_ism/common_types.hpp"
 #include "asr_ism/compliance.hpp"
@@ -92,31 +94,6 @@ struct Hypothesis {
   bool perfect = false;
 };
 
-// An axis-aligned box of vote positions.
-struct Box {
-  double min_x, min_y, min_z, max_x, max_y, max_z;
-
-  static Box around(double x, double y, double z) { return {x, y, z, x, y, z}; }
-
-  void extendTo(double x, double y, double z) {
-    min_x = std::min(min_x, x);
-    min_y = std::min(min_y, y);
-    min_z = std::min(min_z, z);
-    max_x = std::max(max_x, x);
-    max_y = std::max(max_y, y);
-    max_z = std::max(max_z, z);
-  }
-
-  // The squared distance from (x, y, z) to the box; never more than to any point in it, also
-  // in floating point (each difference is one of a point's, or 0).
-  double squaredDistanceFrom(double x, double y, double z) const {
-    const double dx = std::max({0.0, min_x - x, x - max_x});
-    const double dy = std::max({0.0, min_y - y, y - max_y});
-    const double dz = std::max({0.0, min_z - z, z - max_z});
-    return dx * dx + dy * dy + dz * dz;
-  }
-};
-
 // The neighbourhood of one bin, regrouped by member so a hypothesis can be abandoned as soon as
 // the members left cannot lift it above the bar.
 struct Neighbourhood {
@@ -130,8 +107,10 @@ struct Neighbourhood {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;
   std::vector<std::uint32_t> first_run;
   // Per run, the box its votes span: a run farther from a hypothesis than a vote may be is
-  // skipped without a look at its votes.
-  std::vector<Box> run_box;
+  // skipped without a look at its votes. Its squared exterior distance never exceeds a vote's
+  // squared distance, also in floating point (each axis' difference is one of a vote's, or 0,
+  // summed in the same order).
+  std::vector<Eigen::AlignedBox3d> run_box;
   std::vector<std::uint32_t> candidates;  // the bin's own votes, in key order
   double upper_bound = 0.0;
   std::vector<int> atoms;  // sorted estimates that inputs with votes here stand for
@@ -446,10 +425,10 @@ class Search {
         const std::uint32_t v = n.votes[k];
         if (k == n.begin[i] || bin_of_vote_[v] != bin_of_vote_[n.votes[k - 1]]) {
           n.runs.emplace_back(k, k);
-          n.run_box.push_back(Box::around(votes_.px[v], votes_.py[v], votes_.pz[v]));
+          n.run_box.emplace_back();
         }
         n.runs.back().second = k + 1;
-        n.run_box.back().extendTo(votes_.px[v], votes_.py[v], votes_.pz[v]);
+        n.run_box.back().extend(Eigen::Vector3d(votes_.px[v], votes_.py[v], votes_.pz[v]));
       }
     }
     n.first_run.push_back(static_cast<std::uint32_t>(n.runs.size()));
@@ -560,7 +539,8 @@ class Search {
     double skip_beyond_squared = skipBeyond(best);
     // A run's votes are sorted by x: only those within the skip distance in x are looked at.
     for (std::uint32_t run = n.first_run[i]; run < n.first_run[i + 1]; ++run) {
-      if (n.run_box[run].squaredDistanceFrom(cx, cy, cz) >= skip_beyond_squared)
+      if (n.run_box[run].squaredExteriorDistance(Eigen::Vector3d(cx, cy, cz)) >=
+          skip_beyond_squared)
         continue;  // every vote of it would be skipped below
       // Runs are sorted by x at VotingSpace::xOrder's resolution: one step more either side.
       const double reach = std::sqrt(skip_beyond_squared) * (1.0 + 1e-9);
