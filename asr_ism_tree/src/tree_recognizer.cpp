@@ -195,10 +195,11 @@ std::vector<Pose> validatedPoses(const asr_common::Configuration& configuration)
 }
 
 // The estimates in a canonical order, so that neither the input order nor where the world frame
-// lies can matter: by key, then by distance from the estimates' centroid at 1e-9 m (a rigid
-// motion changes it by rounding only), then by pose (for poses that far from a tie only).
+// lies can matter: by key, then by distance from the centroid of the estimates the scene can
+// match at 1e-9 m (a rigid motion changes it by rounding only; clutter does not move it, so the
+// answer does not depend on clutter), then by pose (for poses that far from a tie only).
 std::vector<int> canonicalOrder(const asr_common::Configuration& configuration,
-                                const std::vector<Pose>& poses) {
+                                const std::vector<Pose>& poses, const EstimateMatching& matching) {
   std::vector<int> canonical(configuration.size());
   std::iota(canonical.begin(), canonical.end(), 0);
   const auto sort_key = [&](int i) {
@@ -210,9 +211,14 @@ std::vector<int> canonicalOrder(const asr_common::Configuration& configuration,
   std::sort(canonical.begin(), canonical.end(),
             [&](int a, int b) { return sort_key(a) < sort_key(b); });
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (int i : canonical)  // summed in an order the input order cannot change
+  std::size_t matchable = 0;
+  for (int i : canonical) {  // summed in an order the input order cannot change
+    if (matching.candidates[i].empty())
+      continue;
     centroid += poses[i].position;
-  centroid /= std::max<double>(1.0, static_cast<double>(canonical.size()));
+    ++matchable;
+  }
+  centroid /= std::max<double>(1.0, static_cast<double>(matchable));
   std::vector<std::int64_t> distance_level(canonical.size());
   for (std::size_t i = 0; i < poses.size(); ++i)
     distance_level[i] = std::llround((poses[i].position - centroid).norm() / 1e-9);
@@ -797,8 +803,8 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
                                  std::to_string(parameters_.max_estimates) + " per recognition");
   }
   const std::vector<Pose> poses = validatedPoses(configuration);
-  const std::vector<int> canonical = canonicalOrder(configuration, poses);
   const EstimateMatching matching = matchEstimates(tree_.objects(), configuration);
+  const std::vector<int> canonical = canonicalOrder(configuration, poses, matching);
   const std::size_t labellings = matching.labellingCount();
   if (labellings > parameters_.max_labellings) {
     throw asr_common::InputError(

@@ -197,25 +197,39 @@ TEST_F(TreeRecognizerTest, InputOrderDoesNotChangeTheResult) {
   }
 }
 
-TEST(TreeRecognizer, ExactTiesAreBrokenIndependentlyOfTheInputOrder) {
-  // Binary-exact coordinates and identity orientations make two cup estimates exactly equally
-  // good: 1/32 m on either side of where the cup belongs, with their votes in one bin. Neither
-  // plate-and-cup combination uses only estimates of the other, so both are instances, equally
-  // confident. Whichever order the estimates come in, the result must be the same.
-  const ObjectKey plate{"Plate", "1"}, cup{"Cup", "1"};
+// Binary-exact coordinates and identity orientations make two cup estimates exactly equally
+// good: 1/32 m on either side of where the cup belongs, with their votes in one bin.
+struct TiedCups {
+  ObjectKey plate{"Plate", "1"};
+  ObjectKey cup{"Cup", "1"};
+  IsmTree tree;
+  Configuration configuration;
+};
+
+TiedCups tiedCups() {
+  TiedCups tied;
   const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
-  asr_ism::Demonstration demonstration("pair", {plate, cup});
+  asr_ism::Demonstration demonstration("pair", {tied.plate, tied.cup});
   demonstration.addStep();
   demonstration.setPose(0, 0, Pose(Eigen::Vector3d(0.5, 0.5625, 0.5), identity));
   demonstration.setPose(0, 1, Pose(Eigen::Vector3d(0.75, 0.5625, 0.5), identity));
   asr_ism::IsmRecognitionParameters parameters;
   parameters.bin_size = 0.125;
-  const IsmTree tree =
-      generateIsmTree(demonstration, RelationTopology::star({plate, cup}, 0), parameters);
-  const Configuration configuration = {
-      {plate, Pose(Eigen::Vector3d(0.5, 0.5625, 0.5), identity)},
-      {cup, Pose(Eigen::Vector3d(0.75, 0.5625 - 0.03125, 0.5), identity)},
-      {cup, Pose(Eigen::Vector3d(0.75, 0.5625 + 0.03125, 0.5), identity)}};
+  tied.tree =
+      generateIsmTree(demonstration, RelationTopology::star({tied.plate, tied.cup}, 0), parameters);
+  tied.configuration = {{tied.plate, Pose(Eigen::Vector3d(0.5, 0.5625, 0.5), identity)},
+                        {tied.cup, Pose(Eigen::Vector3d(0.75, 0.5625 - 0.03125, 0.5), identity)},
+                        {tied.cup, Pose(Eigen::Vector3d(0.75, 0.5625 + 0.03125, 0.5), identity)}};
+  return tied;
+}
+
+TEST(TreeRecognizer, ExactTiesAreBrokenIndependentlyOfTheInputOrder) {
+  // Neither plate-and-cup combination uses only estimates of the other, so both are instances,
+  // equally confident. Whichever order the estimates come in, the result must be the same.
+  const TiedCups cups = tiedCups();
+  const ObjectKey& cup = cups.cup;
+  const IsmTree& tree = cups.tree;
+  const Configuration& configuration = cups.configuration;
   // The two cups are repeated detections of one; the search's own tie-break is under test here.
   TreeRecognitionParameters exhaustive;
   exhaustive.merge_repeated_detections = false;
@@ -237,6 +251,29 @@ TEST(TreeRecognizer, ExactTiesAreBrokenIndependentlyOfTheInputOrder) {
       permuted.push_back(configuration[index]);
     expectIdentical(original, recognizer.recognize(permuted), permutation);
   } while (std::next_permutation(permutation.begin(), permutation.end()));
+}
+
+// The same tie with objects the scene does not know added on either side: clutter must not
+// decide it (the scene_recognizer reuses a scene's answer while the estimates it can match stay
+// the same). The estimates' canonical order, which breaks such ties, once measured distances
+// from the centroid of every estimate, clutter included.
+TEST(TreeRecognizer, ExactTiesDoNotDependOnClutter) {
+  const TiedCups tied = tiedCups();
+  const IsmTree& tree = tied.tree;
+  const Configuration& configuration = tied.configuration;
+  TreeRecognitionParameters exhaustive;
+  exhaustive.merge_repeated_detections = false;
+  for (const TreeRecognitionParameters& recognition : {TreeRecognitionParameters{}, exhaustive}) {
+    const TreeRecognizer recognizer(tree, recognition);
+    const auto original = recognizer.recognize(configuration);
+    ASSERT_FALSE(original.empty());
+    for (double side : {-10.0, 10.0}) {
+      Configuration cluttered = configuration;
+      cluttered.push_back(
+          {{"Vase", "1"}, Pose(Eigen::Vector3d(0.6, side, 0.5), Eigen::Quaterniond::Identity())});
+      expectIdentical(original, recognizer.recognize(cluttered), {0, 1, 2});
+    }
+  }
 }
 
 TEST_F(TreeRecognizerTest, ResultsDoNotDependOnThePoolSize) {
