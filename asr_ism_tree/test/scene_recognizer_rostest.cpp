@@ -193,6 +193,56 @@ TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesTheInstancesOfTheLatestEs
   EXPECT_TRUE(found) << "no Brot_Regal instance published";
 }
 
+// A tick recognises anew only the scenes whose estimates changed (IncrementalRecognition): the
+// instance follows an object that moves, and clutter leaves it as it was.
+TEST_F(SceneRecognizerNodeTest, ContinuousModeFollowsAMovedObjectAndIgnoresClutter) {
+  ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
+  asr_msgs::SceneInstanceList latest;
+  ros::Subscriber instances = handle_.subscribe<asr_msgs::SceneInstanceList>(
+      "scene_instances", 10,
+      [&](const asr_msgs::SceneInstanceList::ConstPtr& list) { latest = *list; });
+  ASSERT_TRUE(waitFor(
+      [&] { return objects.getNumSubscribers() > 0 && instances.getNumPublishers() > 0; }, 30));
+  asr_msgs::ObjectEstimateList list;
+  for (const asr_common::ObjectEstimate& estimate : demonstration_.configuration(12))
+    list.objects.push_back(estimateMessage(estimate));
+  const auto x_of_first_object = [&] {
+    const auto& found = latest.instances;
+    if (found.empty())
+      return std::numeric_limits<double>::quiet_NaN();
+    for (const auto& object : found[0].objects) {
+      if (object.type == list.objects[0].type && object.instance_id == list.objects[0].instance_id)
+        return object.pose.position.x;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  };
+  const double x = list.objects[0].pose.pose.position.x;
+  objects.publish(list);
+  ASSERT_TRUE(waitFor([&] { return x_of_first_object() == x; }, 30));
+
+  list.objects[0].pose.pose.position.x = x + 0.05;
+  for (asr_msgs::ObjectEstimate& estimate : list.objects)
+    estimate.header.stamp = ros::Time::now();
+  objects.publish(list);
+  ASSERT_TRUE(waitFor([&] { return x_of_first_object() == x + 0.05; }, 30))
+      << "the instance did not follow the moved object";
+  ASSERT_TRUE(waitFor([&] { return latest.instances.size() > 0; }, 5));
+  const asr_msgs::SceneInstance moved = latest.instances[0];
+
+  asr_msgs::ObjectEstimateList clutter;
+  clutter.objects.push_back(list.objects[0]);
+  clutter.objects[0].type = "Vase";
+  clutter.objects[0].instance_id = "1";
+  clutter.objects[0].header.stamp = ros::Time::now() + ros::Duration(0.001);
+  objects.publish(clutter);
+  // The list's stamp is that of the newest estimate: the clutter's, once it was taken in.
+  ASSERT_TRUE(waitFor([&] { return latest.header.stamp == clutter.objects[0].header.stamp; }, 30));
+  ASSERT_FALSE(latest.instances.empty());
+  EXPECT_EQ(latest.instances[0].confidence, moved.confidence);
+  EXPECT_EQ(latest.instances[0].pose, moved.pose);
+  EXPECT_EQ(latest.instances[0].objects, moved.objects);
+}
+
 TEST_F(SceneRecognizerNodeTest, AFarEstimateInContinuousModeIsRejectedAndRecognitionGoesOn) {
   // One finite estimate 1e5 m from the origin used to end the node inside its timer callback.
   std::uint32_t rejected = 0;
@@ -304,8 +354,9 @@ TEST(TrainerNode, LearnsTheScenesOfADemonstrationFileAndExits) {
     const IsmTree tree = sqlite::loadIsmTree(model, "Getraenke_Regal");
     EXPECT_EQ(tree.scene, "Getraenke_Regal");
     EXPECT_EQ(tree.objects(), demonstration.objects());
-    if (std::string(topology) == "star")
+    if (std::string(topology) == "star") {
       EXPECT_EQ(tree.isms.size(), 1u);
+    }
     // What the trainer stored recognises every demonstrated set: the relations, the relative
     // poses and the objects are right.
     const TreeRecognizer recognizer(tree);

@@ -34,8 +34,9 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
   recognition_parameters_.max_estimates =
       static_cast<std::size_t>(integerParameter(private_node_, "max_estimates", 1000, 1, 1000000));
   readWorkLimits();
+  threads_ = static_cast<unsigned>(integerParameter(private_node_, "threads", 0, 0, 1024));
   models_ = std::make_shared<const SceneModels>(
-      SceneModels::load(model_files_, scenes_, recognition_parameters_));
+      SceneModels::load(model_files_, scenes_, recognition_parameters_, threads_));
 
   instances_publisher_ =
       node_.advertise<asr_msgs::SceneInstanceList>("scene_instances", kResultQueue);
@@ -112,7 +113,7 @@ bool SceneRecognizerNode::reload(asr_msgs::ReloadModel::Request& request,
       request.model_files.empty() ? model_files_ : request.model_files;
   try {
     auto loaded = std::make_shared<const SceneModels>(
-        SceneModels::load(files, scenes_, recognition_parameters_));
+        SceneModels::load(files, scenes_, recognition_parameters_, threads_));
     std::lock_guard<std::mutex> lock(mutex_);
     models_ = std::move(loaded);
     model_files_ = files;
@@ -144,17 +145,6 @@ void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
     publishRejected();
 }
 
-namespace {
-
-bool sameEstimates(const asr_common::Configuration& a, const asr_common::Configuration& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
-    return x.key == y.key && x.pose.position == y.pose.position &&
-           x.pose.orientation.coeffs() == y.pose.orientation.coeffs();
-  });
-}
-
-}  // namespace
-
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
   asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition",
                                            [&] { recognizeLatest(); });
@@ -171,17 +161,10 @@ void SceneRecognizerNode::recognizeLatest() {
     list.header.stamp = newest_stamp_;
     list.header.frame_id = intake_.fixedFrame();
   }
-  // Recognition is deterministic: while the estimates and models stay the same, a tick only
+  // Only scenes whose estimates changed are recognised: while they stay the same a tick only
   // publishes again, so it stays cheap and keeps its period while a service call takes the CPU.
-  if (models != last_models_ || !sameEstimates(configuration, last_configuration_)) {
-    last_models_.reset();  // a refused configuration below leaves no stale cache behind
-    last_instances_.clear();
-    if (!configuration.empty())
-      last_instances_ = models->recognize(configuration);  // the guard reports what it refuses
-    last_models_ = models;
-    last_configuration_ = std::move(configuration);
-  }
-  const std::vector<SceneInstance>& instances = last_instances_;
+  // The guard reports what is refused.
+  const std::vector<SceneInstance> instances = continuous_.recognize(models, configuration);
   for (const SceneInstance& instance : instances)
     list.instances.push_back(toSceneInstanceMessage(instance, list.header));
   instances_publisher_.publish(list);

@@ -14,18 +14,20 @@
 
 #include "asr_ism/latest_estimates.hpp"
 #include "asr_ism/ros/estimate_intake.hpp"
+#include "asr_ism_tree/incremental_recognition.hpp"
 #include "asr_ism_tree/scene_models.hpp"
 
 namespace asr_ism_tree::ros_interface {
 
 /// The scene recogniser node. Parameters (private): model_files (list, required), scenes (list;
 /// empty: all), fixed_frame (map), continuous (true), rate (Hz, 10), estimate_timeout (s, 5; 0:
-/// never), max_estimates (1000: larger requests are refused with a message). Services
+/// never), max_estimates (1000: larger requests are refused with a message), threads (0: one per
+/// core; scenes are recognised in parallel) and the searches' work limits. Services
 /// recognize_scenes and reload_model; in continuous mode the latest estimate of every object from
 /// topic `objects` is recognised at `rate` and published on scene_instances and scene_markers.
 /// Rejected estimates are counted on ~rejected_estimates (latched). Recognition runs outside the
 /// lock on a snapshot of the models, so a service call (on its own thread) never holds up the
-/// timer; a tick whose estimates and models did not change republishes its last instances.
+/// timer; a tick recognises anew only the scenes whose estimates changed.
 class SceneRecognizerNode {
  public:
   /// Reads and checks the parameters and loads the models: throws InputError naming the
@@ -59,11 +61,10 @@ class SceneRecognizerNode {
   asr_ism::ros_interface::EstimateIntake intake_;
   asr_ism::LatestEstimates latest_;
   ros::Time newest_stamp_;
-  // The timer's last recognition (only the timer thread touches these): a tick whose estimates
-  // and models are unchanged publishes it again instead of recognising anew.
-  std::shared_ptr<const SceneModels> last_models_;
-  asr_common::Configuration last_configuration_;
-  std::vector<SceneInstance> last_instances_;
+  unsigned threads_ = 0;  // of the models' pool
+  // The timer's recognitions (only the timer thread touches it): a tick recognises anew only the
+  // scenes whose estimates changed and publishes the others' last instances again.
+  IncrementalRecognition continuous_;
 
   ros::Publisher instances_publisher_;
   ros::Publisher markers_publisher_;
