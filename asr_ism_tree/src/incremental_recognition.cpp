@@ -44,17 +44,30 @@ void renumberEstimates(std::vector<SceneInstance>& instances, const std::vector<
 std::vector<SceneInstance> IncrementalRecognition::recognize(
     const std::shared_ptr<const SceneModels>& models,
     const asr_common::Configuration& configuration) {
-  const std::size_t scenes = models->scenes().size();
   if (models != models_) {
-    results_.assign(scenes, {});
+    results_.assign(models->scenes().size(), {});
     models_ = models;
   }
+  try {
+    return recognizeChangedScenes(configuration);
+  } catch (...) {
+    models_.reset();  // nothing half-updated is kept
+    results_.clear();
+    throw;
+  }
+}
+
+std::vector<SceneInstance> IncrementalRecognition::recognizeChangedScenes(
+    const asr_common::Configuration& configuration) {
+  const std::size_t scenes = results_.size();
   // Too many estimates is refused whatever a scene can match: every scene then runs into it.
-  const bool refused = configuration.size() > models->parameters().max_estimates;
+  const bool refused = configuration.size() > models_->parameters().max_estimates;
+  if (!refused)
+    asr_common::validatedPoses(configuration);  // throws as each scene's recognition would
   std::vector<std::vector<int>> matchable(scenes);
   std::vector<std::size_t> changed;
   for (std::size_t scene = 0; scene < scenes; ++scene) {
-    matchable[scene] = matchableEstimates(models->tree(scene), configuration);
+    matchable[scene] = matchableEstimates(models_->tree(scene), configuration);
     asr_common::Configuration estimates;
     for (int i : matchable[scene])
       estimates.push_back(configuration[i]);
@@ -66,14 +79,7 @@ std::vector<SceneInstance> IncrementalRecognition::recognize(
     }
   }
   recognized_anew_ = changed.size();
-  std::vector<std::vector<SceneInstance>> found;
-  try {
-    found = models->recognizeEach(changed, configuration);
-  } catch (...) {
-    models_.reset();
-    results_.clear();
-    throw;
-  }
+  std::vector<std::vector<SceneInstance>> found = models_->recognizeEach(changed, configuration);
   for (std::size_t i = 0; i < changed.size(); ++i) {
     std::vector<int> position_of(configuration.size(), -1);
     for (std::size_t k = 0; k < matchable[changed[i]].size(); ++k)

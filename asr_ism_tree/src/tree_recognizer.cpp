@@ -182,18 +182,6 @@ TreeRecognizer::TreeRecognizer(const IsmTree& tree, TreeRecognitionParameters pa
 
 namespace {
 
-std::vector<Pose> validatedPoses(const asr_common::Configuration& configuration) {
-  std::vector<Pose> poses;
-  poses.reserve(configuration.size());
-  for (std::size_t i = 0; i < configuration.size(); ++i) {
-    const auto& estimate = configuration[i];
-    poses.push_back(asr_common::validatedPose(
-        estimate.pose.position, estimate.pose.orientation,
-        "object estimate " + std::to_string(i) + " (" + estimate.key.toString() + ")"));
-  }
-  return poses;
-}
-
 // The estimates in a canonical order, so that neither the input order nor where the world frame
 // lies can matter: by key, then by distance from the centroid of the estimates the scene can
 // match at 1e-9 m (a rigid motion changes it by rounding only; clutter does not move it, so the
@@ -802,7 +790,7 @@ std::vector<SceneInstance> TreeRecognizer::recognize(const asr_common::Configura
                                  " object estimates, more than the configured maximum of " +
                                  std::to_string(parameters_.max_estimates) + " per recognition");
   }
-  const std::vector<Pose> poses = validatedPoses(configuration);
+  const std::vector<Pose> poses = asr_common::validatedPoses(configuration);
   const EstimateMatching matching = matchEstimates(tree_.objects(), configuration);
   const std::vector<int> canonical = canonicalOrder(configuration, poses, matching);
   const std::size_t labellings = matching.labellingCount();

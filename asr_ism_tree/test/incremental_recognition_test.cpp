@@ -6,12 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <random>
 #include <set>
 #include <string>
 
 #include "asr_common/input_error.hpp"
+#include "asr_common/testing/input_error_of.hpp"
 #include "asr_common/testing/recordings_skip.hpp"
 #include "asr_common/testing/temp_dir.hpp"
 #include "asr_ism/sqlite/demonstration_reader.hpp"
@@ -24,6 +26,7 @@ namespace {
 
 using asr_common::Configuration;
 using asr_common::ObjectEstimate;
+using asr_common::testing::inputErrorOf;
 using asr_common::testing::recording;
 using asr_common::testing::TempDir;
 
@@ -201,6 +204,15 @@ TEST(IncrementalRecognition, NewModelsOrARefusalLeaveNothingToReuse) {
   expectSameInstances(incremental.recognize(models, kitchen.world),
                       models->recognize(kitchen.world), "after the refusal");
   EXPECT_EQ(incremental.scenesRecognizedAnew(), 3u);
+
+  // An invalid pose, even of an object no scene has, is refused as recognising anew refuses it.
+  Configuration invalid(kitchen.world.begin(), kitchen.world.end() - 1);
+  incremental.recognize(models, invalid);
+  invalid.push_back({{"Vase", "1"}, kitchen.world.front().pose});
+  invalid.back().pose.position.x() = std::nan("");
+  const std::string expected = inputErrorOf([&] { models->recognize(invalid); });
+  EXPECT_NE(expected.find("(Vase:1)"), std::string::npos) << expected;
+  EXPECT_EQ(inputErrorOf([&] { incremental.recognize(models, invalid); }), expected);
 
   const auto reloaded =
       std::make_shared<const SceneModels>(SceneModels::load(kitchen.model_files, {}, parameters));

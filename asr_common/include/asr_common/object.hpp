@@ -35,4 +35,8 @@ struct ObjectEstimate {
 /// A set of object estimates observed together (one time step, or one camera view's worth).
 using Configuration = std::vector<ObjectEstimate>;
 
+/// The estimates' poses, each validated and canonicalised (validatedPose); throws InputError
+/// naming the first estimate that fails ("object estimate <index> (<key>)").
+std::vector<Pose> validatedPoses(const Configuration& configuration);
+
 }  // namespace asr_common

@@ -26,6 +26,8 @@ class IncrementalRecognition {
   std::size_t scenesRecognizedAnew() const { return recognized_anew_; }
 
  private:
+  std::vector<SceneInstance> recognizeChangedScenes(const asr_common::Configuration& configuration);
+
   // A scene's last recognition: the estimates it could match (in input order), and its
   // instances with each object's `estimate` an index into those.
   struct SceneResult {
