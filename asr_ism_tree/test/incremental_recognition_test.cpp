@@ -35,7 +35,8 @@ struct KitchenScene {
   const char* scene;
 };
 
-// Scenes that share some types (Cup, PlateDeep) and not others.
+// Scenes that share some types (PlateDeep in all three, marker_1 and marker_5 in two) and not
+// others.
 const KitchenScene kScenes[] = {{"story_1.sqlite", "gedeck"},
                                 {"story_2.sqlite", "Brot_Regal"},
                                 {"story_2.sqlite", "Muesli_Gedeck"}};
