@@ -21,7 +21,12 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
     : node_(node),
       private_node_(private_node),
       listener_(buffer_),
-      intake_(buffer_, fixedFrameParameter(private_node)) {
+      intake_(buffer_, fixedFrameParameter(private_node)),
+      output_([this](const RecognizedList& recognized, bool fresh) { publish(recognized, fresh); },
+              [](std::exception_ptr) {
+                // recognizeLatest guards what it calls: this is the last line of defence.
+                ROS_ERROR_THROTTLE(5.0, "scene_recognizer: continuous recognition failed");
+              }) {
   model_files_ = stringListParameter(private_node_, "model_files");
   checkParameter(private_node_, "model_files", !model_files_.empty(),
                  "set to the model files to load (a list, or one file)");
@@ -145,31 +150,49 @@ void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
     publishRejected();
 }
 
+// The timer never waits for a recognition: where the last one still runs (scenes seen badly,
+// every object moving) the output publishes the last list again and keeps its period.
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
-  asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition",
-                                           [&] { recognizeLatest(); });
+  asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition", [&] {
+    auto configuration = std::make_shared<asr_common::Configuration>();
+    std::shared_ptr<const SceneModels> models;
+    std_msgs::Header header;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      *configuration = latest_.current(ros::Time::now().toSec(), estimate_timeout_);
+      models = models_;
+      header.stamp = newest_stamp_;
+      header.frame_id = intake_.fixedFrame();
+    }
+    output_.tick([this, configuration, models, header] {
+      return recognizeLatest(*configuration, models, header);
+    });
+  });
 }
 
-void SceneRecognizerNode::recognizeLatest() {
-  asr_common::Configuration configuration;
-  std::shared_ptr<const SceneModels> models;
-  asr_msgs::SceneInstanceList list;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    configuration = latest_.current(ros::Time::now().toSec(), estimate_timeout_);
-    models = models_;
-    list.header.stamp = newest_stamp_;
-    list.header.frame_id = intake_.fixedFrame();
-  }
-  // Only scenes whose estimates changed are recognised: while they stay the same a tick only
-  // publishes again, so it stays cheap and keeps its period while a service call takes the CPU.
-  // The guard reports what is refused.
-  const std::vector<SceneInstance> instances = continuous_.recognize(models, configuration);
+// On the output's worker thread. Only scenes whose estimates changed are recognised anew; what
+// is refused (the guard reports it) gives no list.
+std::optional<SceneRecognizerNode::RecognizedList> SceneRecognizerNode::recognizeLatest(
+    const asr_common::Configuration& configuration,
+    const std::shared_ptr<const SceneModels>& models, const std_msgs::Header& header) {
+  std::vector<SceneInstance> instances;
+  if (!asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition", [&] {
+        instances = continuous_.recognize(models, configuration);
+      }))
+    return std::nullopt;
+  RecognizedList recognized;
+  recognized.list.header = header;
   for (const SceneInstance& instance : instances)
-    list.instances.push_back(toSceneInstanceMessage(instance, list.header));
-  instances_publisher_.publish(list);
+    recognized.list.instances.push_back(toSceneInstanceMessage(instance, header));
   if (markers_publisher_.getNumSubscribers() > 0)
-    markers_publisher_.publish(sceneInstanceMarkers(instances, *models, list.header));
+    recognized.markers = sceneInstanceMarkers(instances, *models, header);
+  return recognized;
+}
+
+void SceneRecognizerNode::publish(const RecognizedList& recognized, bool fresh) {
+  instances_publisher_.publish(recognized.list);
+  if (fresh && recognized.markers)  // latched: a repeat would change nothing
+    markers_publisher_.publish(*recognized.markers);
 }
 
 void SceneRecognizerNode::publishRejected() {

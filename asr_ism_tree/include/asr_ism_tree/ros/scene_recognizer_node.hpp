@@ -3,16 +3,20 @@
 #include <asr_msgs/ObjectEstimateList.h>
 #include <asr_msgs/RecognizeScenes.h>
 #include <asr_msgs/ReloadModel.h>
+#include <asr_msgs/SceneInstanceList.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "asr_ism/latest_estimates.hpp"
+#include "asr_ism/periodic_output.hpp"
 #include "asr_ism/ros/estimate_intake.hpp"
 #include "asr_ism_tree/incremental_recognition.hpp"
 #include "asr_ism_tree/scene_models.hpp"
@@ -27,7 +31,11 @@ namespace asr_ism_tree::ros_interface {
 /// topic `objects` is recognised at `rate` and published on scene_instances and scene_markers.
 /// Rejected estimates are counted on ~rejected_estimates (latched). Recognition runs outside the
 /// lock on a snapshot of the models, so a service call (on its own thread) never holds up the
-/// timer; a tick recognises anew only the scenes whose estimates changed.
+/// timer. The continuous recognitions run on a thread of their own (PeriodicOutput) and
+/// recognise anew only the scenes whose estimates changed; a list is published as soon as it is
+/// recognised, and a tick that finds the last recognition still running publishes the last list
+/// again (stamped with its estimates' time), so the output keeps `rate` while its content lags
+/// by one recognition.
 class SceneRecognizerNode {
  public:
   /// Reads and checks the parameters and loads the models: throws InputError naming the
@@ -43,7 +51,14 @@ class SceneRecognizerNode {
   void receive(const asr_msgs::ObjectEstimateList& message);
   void store(const asr_msgs::ObjectEstimateList& message);
   void tick(const ros::TimerEvent& event);
-  void recognizeLatest();
+  struct RecognizedList {
+    asr_msgs::SceneInstanceList list;
+    std::optional<visualization_msgs::MarkerArray> markers;  // where someone listens
+  };
+  std::optional<RecognizedList> recognizeLatest(const asr_common::Configuration& configuration,
+                                                const std::shared_ptr<const SceneModels>& models,
+                                                const std_msgs::Header& header);
+  void publish(const RecognizedList& recognized, bool fresh);
   void publishRejected();
 
   ros::NodeHandle node_;
@@ -62,8 +77,8 @@ class SceneRecognizerNode {
   asr_ism::LatestEstimates latest_;
   ros::Time newest_stamp_;
   unsigned threads_ = 0;  // of the models' pool
-  // The timer's recognitions (only the timer thread touches it): a tick recognises anew only the
-  // scenes whose estimates changed and publishes the others' last instances again.
+  // The continuous recognitions (only the output's worker thread touches it): one recognises
+  // anew only the scenes whose estimates changed and returns the others' last instances again.
   IncrementalRecognition continuous_;
 
   ros::Publisher instances_publisher_;
@@ -73,6 +88,8 @@ class SceneRecognizerNode {
   ros::ServiceServer recognize_service_;
   ros::ServiceServer reload_service_;
   ros::Timer timer_;
+  // Last: destroyed first, so a running recognition ends while what it uses still exists.
+  asr_ism::PeriodicOutput<RecognizedList> output_;
 };
 
 }  // namespace asr_ism_tree::ros_interface
