@@ -13,7 +13,8 @@ namespace asr_ism {
 /// An output published once per period (a node's timer) whose results may take longer than a
 /// period to compute: each tick starts computing the newest input on a BackgroundWorker unless
 /// the last computation still runs, and then publishes the last result again, so the output keeps
-/// its period while its content lags by one computation. A result is published as soon as it is
+/// its period while its content lags (a result stands until the next is computed, so it is up to
+/// two computations old when last published). A result is published as soon as it is
 /// computed (`fresh`); a refused input (no result, or an exception) publishes nothing and leaves
 /// nothing to publish again.
 template <typename Result>

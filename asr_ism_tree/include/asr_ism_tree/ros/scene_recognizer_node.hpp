@@ -35,7 +35,7 @@ namespace asr_ism_tree::ros_interface {
 /// recognise anew only the scenes whose estimates changed; a list is published as soon as it is
 /// recognised, and a tick that finds the last recognition still running publishes the last list
 /// again (stamped with its estimates' time), so the output keeps `rate` while its content lags
-/// by one recognition.
+/// (by up to two recognitions).
 class SceneRecognizerNode {
  public:
   /// Reads and checks the parameters and loads the models: throws InputError naming the
