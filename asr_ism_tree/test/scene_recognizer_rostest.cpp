@@ -193,7 +193,7 @@ TEST_F(SceneRecognizerNodeTest, ContinuousModePublishesTheInstancesOfTheLatestEs
   EXPECT_TRUE(found) << "no Brot_Regal instance published";
 }
 
-// A tick recognises anew only the scenes whose estimates changed (IncrementalRecognition): the
+// A tick recognises anew only the scenes whose estimates changed (ContinuousRecognition): the
 // instance follows an object that moves, and clutter leaves it as it was.
 TEST_F(SceneRecognizerNodeTest, ContinuousModeFollowsAMovedObjectAndIgnoresClutter) {
   ros::Publisher objects = handle_.advertise<asr_msgs::ObjectEstimateList>("objects", 10);
@@ -235,7 +235,8 @@ TEST_F(SceneRecognizerNodeTest, ContinuousModeFollowsAMovedObjectAndIgnoresClutt
   clutter.objects[0].instance_id = "1";
   clutter.objects[0].header.stamp = ros::Time::now() + ros::Duration(0.001);
   objects.publish(clutter);
-  // The list's stamp is that of the newest estimate: the clutter's, once it was taken in.
+  // The list's stamp is that of the newest estimate: the clutter's, once it was taken in (the
+  // scene's answer stands for the estimates as of then).
   ASSERT_TRUE(waitFor([&] { return latest.header.stamp == clutter.objects[0].header.stamp; }, 30));
   ASSERT_FALSE(latest.instances.empty());
   EXPECT_EQ(latest.instances[0].confidence, moved.confidence);

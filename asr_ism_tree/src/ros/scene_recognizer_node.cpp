@@ -5,6 +5,8 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
+#include <map>
+#include <string>
 
 #include "asr_common/input_error.hpp"
 #include "asr_common/ros/callback_guard.hpp"
@@ -21,12 +23,7 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
     : node_(node),
       private_node_(private_node),
       listener_(buffer_),
-      intake_(buffer_, fixedFrameParameter(private_node)),
-      output_([this](const RecognizedList& recognized, bool fresh) { publish(recognized, fresh); },
-              [](std::exception_ptr) {
-                // recognizeLatest guards what it calls: this is the last line of defence.
-                ROS_ERROR_THROTTLE(5.0, "scene_recognizer: continuous recognition failed");
-              }) {
+      intake_(buffer_, fixedFrameParameter(private_node)) {
   model_files_ = stringListParameter(private_node_, "model_files");
   checkParameter(private_node_, "model_files", !model_files_.empty(),
                  "set to the model files to load (a list, or one file)");
@@ -54,6 +51,21 @@ SceneRecognizerNode::SceneRecognizerNode(ros::NodeHandle node, ros::NodeHandle p
       node_.advertiseService("recognize_scenes", &SceneRecognizerNode::recognize, this);
   reload_service_ = node_.advertiseService("reload_model", &SceneRecognizerNode::reload, this);
   if (continuous) {
+    // Slow scenes share one slot per thread of the models' pool; a scene recognised within its
+    // share of a period is quick and follows its estimates every tick.
+    continuous_ = std::make_unique<ContinuousRecognition>(
+        [](std::exception_ptr error) {
+          // On a scene's thread: input errors were refused at the offer, so this is unexpected.
+          try {
+            std::rethrow_exception(error);
+          } catch (const std::exception& e) {
+            ROS_ERROR_THROTTLE(5.0, "scene_recognizer: continuous recognition failed: %s",
+                               e.what());
+          } catch (...) {
+            ROS_ERROR_THROTTLE(5.0, "scene_recognizer: continuous recognition failed");
+          }
+        },
+        ContinuousPace{threads_, 1.0 / rate});
     subscriber_ = node_.subscribe("objects", kEstimateQueue, &SceneRecognizerNode::receive, this);
     timer_ = node_.createTimer(ros::Duration(1.0 / rate), &SceneRecognizerNode::tick, this);
   }
@@ -150,49 +162,60 @@ void SceneRecognizerNode::store(const asr_msgs::ObjectEstimateList& message) {
     publishRejected();
 }
 
-// The timer never waits for a recognition: where the last one still runs (scenes seen badly,
-// every object moving) the output publishes the last list again and keeps its period.
+// The timer never waits for a recognition: each scene runs on its own thread, and a tick
+// publishes what each has recognised so far. A refused configuration (the guard reports it)
+// drops every result, so nothing is published until one is accepted.
 void SceneRecognizerNode::tick(const ros::TimerEvent&) {
   asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition", [&] {
     auto configuration = std::make_shared<asr_common::Configuration>();
     std::shared_ptr<const SceneModels> models;
-    std_msgs::Header header;
+    ros::Time stamp;
+    std::string frame;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       *configuration = latest_.current(ros::Time::now().toSec(), estimate_timeout_);
       models = models_;
-      header.stamp = newest_stamp_;
-      header.frame_id = intake_.fixedFrame();
+      stamp = newest_stamp_;
+      frame = intake_.fixedFrame();
     }
-    output_.tick([this, configuration, models, header] {
-      return recognizeLatest(*configuration, models, header);
-    });
+    continuous_->offer(models, configuration, stamp.toNSec());
+    publishLatest(*models, frame);
   });
 }
 
-// On the output's worker thread. Only scenes whose estimates changed are recognised anew; what
-// is refused (the guard reports it) gives no list.
-std::optional<SceneRecognizerNode::RecognizedList> SceneRecognizerNode::recognizeLatest(
-    const asr_common::Configuration& configuration,
-    const std::shared_ptr<const SceneModels>& models, const std_msgs::Header& header) {
+// Every scene's latest instances, best first, each stamped with the time of the estimates it was
+// recognised from; the list with the newest of those. The markers (latched) go out where some
+// scene's result is new.
+void SceneRecognizerNode::publishLatest(const SceneModels& models, const std::string& frame) {
+  const ContinuousRecognition::Latest latest = continuous_->latest();
+  asr_msgs::SceneInstanceList list;
+  list.header.frame_id = frame;
   std::vector<SceneInstance> instances;
-  if (!asr_common::ros_interface::guardCallback("scene_recognizer: continuous recognition", [&] {
-        instances = continuous_.recognize(models, configuration);
-      }))
-    return std::nullopt;
-  RecognizedList recognized;
-  recognized.list.header = header;
-  for (const SceneInstance& instance : instances)
-    recognized.list.instances.push_back(toSceneInstanceMessage(instance, header));
-  if (markers_publisher_.getNumSubscribers() > 0)
-    recognized.markers = sceneInstanceMarkers(instances, *models, header);
-  return recognized;
-}
-
-void SceneRecognizerNode::publish(const RecognizedList& recognized, bool fresh) {
-  instances_publisher_.publish(recognized.list);
-  if (fresh && recognized.markers)  // latched: a repeat would change nothing
-    markers_publisher_.publish(*recognized.markers);
+  std::map<std::string, ros::Time> stamp_of_scene;
+  bool recognized = false;
+  for (const auto& result : latest.scenes) {
+    if (!result)
+      continue;
+    recognized = true;
+    ros::Time stamp;
+    stamp.fromNSec(result->stamp);
+    list.header.stamp = std::max(list.header.stamp, stamp);
+    for (const SceneInstance& instance : result->instances) {
+      instances.push_back(instance);
+      stamp_of_scene[instance.scene] = stamp;
+    }
+  }
+  if (!recognized)
+    return;  // nothing recognised yet since the models were loaded or a refusal
+  sortByConfidence(instances);
+  std_msgs::Header header = list.header;
+  for (const SceneInstance& instance : instances) {
+    header.stamp = stamp_of_scene[instance.scene];
+    list.instances.push_back(toSceneInstanceMessage(instance, header));
+  }
+  instances_publisher_.publish(list);
+  if (latest.fresh > 0 && markers_publisher_.getNumSubscribers() > 0)
+    markers_publisher_.publish(sceneInstanceMarkers(instances, models, list.header));
 }
 
 void SceneRecognizerNode::publishRejected() {

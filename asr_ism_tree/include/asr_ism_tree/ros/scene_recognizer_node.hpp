@@ -16,9 +16,8 @@
 #include <vector>
 
 #include "asr_ism/latest_estimates.hpp"
-#include "asr_ism/periodic_output.hpp"
 #include "asr_ism/ros/estimate_intake.hpp"
-#include "asr_ism_tree/incremental_recognition.hpp"
+#include "asr_ism_tree/continuous_recognition.hpp"
 #include "asr_ism_tree/scene_models.hpp"
 
 namespace asr_ism_tree::ros_interface {
@@ -31,11 +30,11 @@ namespace asr_ism_tree::ros_interface {
 /// topic `objects` is recognised at `rate` and published on scene_instances and scene_markers.
 /// Rejected estimates are counted on ~rejected_estimates (latched). Recognition runs outside the
 /// lock on a snapshot of the models, so a service call (on its own thread) never holds up the
-/// timer. The continuous recognitions run on a thread of their own (PeriodicOutput) and
-/// recognise anew only the scenes whose estimates changed; a list is published as soon as it is
-/// recognised, and a tick that finds the last recognition still running publishes the last list
-/// again (stamped with its estimates' time), so the output keeps `rate` while its content lags
-/// (by up to two recognitions).
+/// timer. In continuous mode each scene is recognised on a thread of its own, anew only where
+/// the estimates of its objects' types changed (ContinuousRecognition), and every tick publishes
+/// each scene's latest instances, each stamped with the time of the estimates it came from: the
+/// output keeps `rate`, a scene seen well follows within a period or two, and a badly seen one
+/// lags by what its searches take.
 class SceneRecognizerNode {
  public:
   /// Reads and checks the parameters and loads the models: throws InputError naming the
@@ -51,14 +50,7 @@ class SceneRecognizerNode {
   void receive(const asr_msgs::ObjectEstimateList& message);
   void store(const asr_msgs::ObjectEstimateList& message);
   void tick(const ros::TimerEvent& event);
-  struct RecognizedList {
-    asr_msgs::SceneInstanceList list;
-    std::optional<visualization_msgs::MarkerArray> markers;  // where someone listens
-  };
-  std::optional<RecognizedList> recognizeLatest(const asr_common::Configuration& configuration,
-                                                const std::shared_ptr<const SceneModels>& models,
-                                                const std_msgs::Header& header);
-  void publish(const RecognizedList& recognized, bool fresh);
+  void publishLatest(const SceneModels& models, const std::string& frame);
   void publishRejected();
 
   ros::NodeHandle node_;
@@ -77,9 +69,6 @@ class SceneRecognizerNode {
   asr_ism::LatestEstimates latest_;
   ros::Time newest_stamp_;
   unsigned threads_ = 0;  // of the models' pool
-  // The continuous recognitions (only the output's worker thread touches it): one recognises
-  // anew only the scenes whose estimates changed and returns the others' last instances again.
-  IncrementalRecognition continuous_;
 
   ros::Publisher instances_publisher_;
   ros::Publisher markers_publisher_;
@@ -88,8 +77,9 @@ class SceneRecognizerNode {
   ros::ServiceServer recognize_service_;
   ros::ServiceServer reload_service_;
   ros::Timer timer_;
-  // Last: destroyed first, so a running recognition ends while what it uses still exists.
-  asr_ism::PeriodicOutput<RecognizedList> output_;
+  // In continuous mode; offered and read by the timer only. Last: destroyed first, so a running
+  // recognition ends while what it uses still exists.
+  std::unique_ptr<ContinuousRecognition> continuous_;
 };
 
 }  // namespace asr_ism_tree::ros_interface
