@@ -386,7 +386,7 @@ TEST_F(ContinuousRecognitionTest, NewModelsOrARefusalDropEveryResult) {
 
 TEST(SceneModels, ParallelRecognitionEqualsSerial) {
   REQUIRE_RECORDINGS();
-  TempDir dir("asr_incremental");
+  TempDir dir("asr_continuous");
   const Kitchen kitchen = learnKitchen(dir);
   const SceneModels serial = SceneModels::load(kitchen.model_files, {}, quickParameters(), 1);
   const SceneModels parallel = SceneModels::load(kitchen.model_files, {}, quickParameters(), 3);
@@ -405,7 +405,7 @@ TEST(SceneModels, ParallelRecognitionEqualsSerial) {
 
 TEST(SceneModels, TheErrorOfTheFirstSceneIsReportedWhateverTheThreadsTiming) {
   REQUIRE_RECORDINGS();
-  TempDir dir("asr_incremental");
+  TempDir dir("asr_continuous");
   const Kitchen kitchen = learnKitchen(dir);
   TreeRecognitionParameters parameters = quickParameters();
   parameters.max_estimates = 1;
