@@ -86,8 +86,7 @@ std::vector<ContinuousRecognition::Start> ContinuousRecognition::scenesToStart(
   std::vector<Start> candidates;
   for (std::size_t scene = 0; scene < scenes_.size(); ++scene) {
     SceneState& state = scenes_[scene];
-    asr_common::Configuration estimates =
-        estimatesAt(configuration, matchableEstimates(models_->tree(scene), configuration));
+    asr_common::Configuration estimates = matchableEstimates(models_->tree(scene), configuration);
     const bool running = workers_[scene]->busy();
     state.behind = !state.started || !sameEstimates(estimates, state.estimates);
     if (!state.behind) {

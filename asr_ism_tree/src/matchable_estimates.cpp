@@ -6,24 +6,15 @@
 
 namespace asr_ism_tree {
 
-std::vector<int> matchableEstimates(const IsmTree& tree,
-                                    const asr_common::Configuration& configuration) {
+asr_common::Configuration matchableEstimates(const IsmTree& tree,
+                                             const asr_common::Configuration& configuration) {
   const EstimateMatching matching = matchEstimates(tree.objects(), configuration);
-  std::vector<int> matchable;
+  asr_common::Configuration matchable;
   for (std::size_t i = 0; i < configuration.size(); ++i) {
     if (!matching.candidates[i].empty())
-      matchable.push_back(static_cast<int>(i));
+      matchable.push_back(configuration[i]);
   }
   return matchable;
-}
-
-asr_common::Configuration estimatesAt(const asr_common::Configuration& configuration,
-                                      const std::vector<int>& indices) {
-  asr_common::Configuration estimates;
-  estimates.reserve(indices.size());
-  for (int i : indices)
-    estimates.push_back(configuration[i]);
-  return estimates;
 }
 
 bool sameEstimates(const asr_common::Configuration& a, const asr_common::Configuration& b) {
